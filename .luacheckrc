@@ -1,0 +1,7 @@
+-- strike: zero warnings, the common subset of Lua 5.1-5.4.
+std = 'min'
+max_line_length = 120
+ignore = { '212/self' } -- methods keep `self` even when a subclass needs no state
+files['spec'] = { std = 'min+busted' }
+files['.busted'] = { std = 'min' }
+exclude_files = { '.git' }

@@ -1,0 +1,195 @@
+--- The abstract base of every shape: a pose (position of the centroid, angle, uniform
+--- scale) and the transforms. Subclasses keep their geometry in local coordinates
+--- (relative to the centroid, unrotated, unscaled) and cache world-space data, refreshed
+--- lazily: a transform only marks the shape dirty.
+local ROOT = (...):match('^(.-)%.base%.[^%.]+$')
+local Object = require(ROOT .. '.class')
+local check = require(ROOT .. '.check')
+
+local cos, sin = math.cos, math.sin
+local number, positive, optPoint = check.number, check.positive, check.optPoint
+
+---@class strike.Shape : strike.Object
+---@field parent strike.Collider|nil the collider holding this shape, if any
+---@field kind string how the narrow phase treats it: 'polygon' or 'circle'
+---@field name string the class name, as S.hapes names it
+---@field type string always 'shape'
+local Shape = Object:extend()
+Shape.type = 'shape'
+Shape.kind = 'abstract'
+Shape.name = 'Shape'
+
+--- Set the pose: the centroid at (x, y), angle 0, scale 1. Called by constructors.
+---@param x number @param y number
+function Shape:_setPose(x, y)
+  self._x, self._y = x, y
+  self._angle, self._cos, self._sin, self._scale = 0, 1, 0, 1
+  self._dirty = true
+end
+
+--- Mark this shape's world-space cache, and every enclosing collider's aggregates, as
+--- stale (see the cache protocol in colliders/Collider.lua).
+function Shape:_touch()
+  self._dirty = true
+  local p = self.parent
+  while p and p._clean do
+    p._clean = false
+    p = p.parent
+  end
+end
+
+--- Recompute world-space data. Subclasses override it; it must clear `_dirty`.
+function Shape:_refresh() self._dirty = false end
+
+--- Move by (dx, dy).
+---@param dx number @param dy number
+---@return self
+function Shape:translate(dx, dy)
+  number(dx, 'strike.Shape:translate', 'dx')
+  number(dy, 'strike.Shape:translate', 'dy')
+  self._x, self._y = self._x + dx, self._y + dy
+  self:_touch()
+  return self
+end
+
+--- Move the centroid to (x, y).
+---@param x number @param y number
+---@return self
+function Shape:translateTo(x, y)
+  number(x, 'strike.Shape:translateTo', 'x')
+  number(y, 'strike.Shape:translateTo', 'y')
+  self._x, self._y = x, y
+  self:_touch()
+  return self
+end
+
+-- Rotate the pose by `a` about (rx, ry) (the centroid when nil). Arguments are valid.
+local function rotateBy(self, a, rx, ry)
+  local angle = self._angle + a
+  self._angle, self._cos, self._sin = angle, cos(angle), sin(angle)
+  if rx then
+    local c, s = cos(a), sin(a)
+    local dx, dy = self._x - rx, self._y - ry
+    self._x, self._y = rx + c * dx - s * dy, ry + s * dx + c * dy
+  end
+  self:_touch()
+  return self
+end
+
+--- Rotate by `angle` radians (positive turns +x toward +y, as love.graphics.rotate does)
+--- about (refx, refy), by default the centroid.
+---@param angle number @param refx number|nil @param refy number|nil
+---@return self
+function Shape:rotate(angle, refx, refy)
+  number(angle, 'strike.Shape:rotate', 'angle')
+  refx, refy = optPoint(refx, refy, 'strike.Shape:rotate')
+  return rotateBy(self, angle, refx, refy)
+end
+
+--- Rotate to the absolute `angle` about (refx, refy), by default the centroid: the same
+--- as rotate(angle - getAngle(), refx, refy).
+---@param angle number @param refx number|nil @param refy number|nil
+---@return self
+function Shape:rotateTo(angle, refx, refy)
+  number(angle, 'strike.Shape:rotateTo', 'angle')
+  refx, refy = optPoint(refx, refy, 'strike.Shape:rotateTo')
+  return rotateBy(self, angle - self._angle, refx, refy)
+end
+
+--- Scale by factor `sf` (> 0) about (refx, refy), by default the centroid. Calls compose:
+--- scale(2) then scale(3) is scale(6).
+---@param sf number @param refx number|nil @param refy number|nil
+---@return self
+function Shape:scale(sf, refx, refy)
+  positive(sf, 'strike.Shape:scale', 'factor')
+  refx, refy = optPoint(refx, refy, 'strike.Shape:scale')
+  self._scale = self._scale * sf
+  if refx then
+    self._x, self._y = refx + (self._x - refx) * sf, refy + (self._y - refy) * sf
+  end
+  self:_touch()
+  return self
+end
+
+--- The angle in radians: the constructor's angle plus every rotation since.
+---@return number
+function Shape:getAngle() return self._angle end
+
+--- The accumulated scale factor (1 after construction).
+---@return number
+function Shape:getScale() return self._scale end
+
+--- The centroid (area centroid for polygons, centre for circles, midpoint for edges).
+---@return number x, number y
+function Shape:getCentroid() return self._x, self._y end
+
+--- The area (never negative; 0 for an Edge).
+---@return number
+function Shape:getArea() return self._area * self._scale * self._scale end
+
+--- Area and centroid together.
+---@return number area, number x, number y
+function Shape:getAreaCentroid() return self:getArea(), self._x, self._y end
+
+--- Radius of the smallest circle about the centroid that holds the shape.
+---@return number
+function Shape:getRadius() return self._radius * self._scale end
+
+--- Axis-aligned bounds as minimum x, minimum y, width, height.
+---@return number x, number y, number w, number h
+function Shape:getBbox()
+  if self._dirty then self:_refresh() end
+  return self._minx, self._miny, self._maxx - self._minx, self._maxy - self._miny
+end
+
+--- Axis-aligned bounds as minimum x, minimum y, maximum x, maximum y.
+---@return number minx, number miny, number maxx, number maxy
+function Shape:getBounds()
+  if self._dirty then self:_refresh() end
+  return self._minx, self._miny, self._maxx, self._maxy
+end
+
+--- The outermost collider that holds this shape, or the shape itself when it has none.
+---@return strike.Shape|strike.Collider
+function Shape:getRoot()
+  local node = self
+  while node.parent do node = node.parent end
+  return node
+end
+
+-- Copy plain data: numbers, strings, booleans, and tables without metatables (recursively).
+-- Tables with a metatable (other objects) are shared, not copied.
+local function clone(v)
+  if type(v) ~= 'table' or getmetatable(v) then return v end
+  local t = {}
+  for k, x in pairs(v) do t[k] = clone(x) end
+  return t
+end
+Shape._clone = clone
+
+--- An independent copy of the same class, in the same pose; then, if given, moved so its
+--- centroid is at (x, y) and rotated to `angle`. Works for user-defined shapes too: it
+--- copies the shape's data instead of calling the constructor.
+---@param x number|nil @param y number|nil @param angle number|nil
+---@return strike.Shape
+function Shape:copy(x, y, angle)
+  local c = setmetatable({}, getmetatable(self))
+  for k, v in pairs(self) do
+    if k ~= 'parent' then c[k] = clone(v) end
+  end
+  c._dirty = true
+  if x ~= nil or y ~= nil then c:translateTo(x, y) end
+  if angle ~= nil then c:rotateTo(angle) end
+  return c
+end
+
+--- Point-containment accepts (x, y) or a table {x = , y = }.
+---@return number|nil, number|nil
+function Shape._point(x, y, fname)
+  if type(x) == 'table' then x, y = x.x, x.y end
+  number(x, fname, 'point x')
+  number(y, fname, 'point y')
+  return x, y
+end
+
+return Shape

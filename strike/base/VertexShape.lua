@@ -1,0 +1,210 @@
+--- The base of every shape made of vertices: ConvexPolygon (and its subclasses) and Edge.
+--- Geometry lives in flat number arrays with a count:
+---   _lx, _ly    local vertices (relative to the centroid, unrotated, unscaled), positive winding
+---   _lnx, _lny  local unit outward normals, normal i belongs to edge i (vertex i to vertex i+1)
+---   _wx, _wy, _wnx, _wny and _minx.._maxy: world-space copies, refreshed when dirty.
+local ROOT = (...):match('^(.-)%.base%.[^%.]+$')
+local Shape = require(ROOT .. '.base.Shape')
+local check = require(ROOT .. '.check')
+
+local sqrt, huge = math.sqrt, math.huge
+local number = check.number
+
+---@class strike.VertexShape : strike.Shape
+local VertexShape = Shape:extend()
+VertexShape.kind = 'polygon'
+VertexShape.name = 'VertexShape'
+
+--- Store world-space vertices xs, ys (count n, positive winding, validated) as local
+--- geometry about the centroid (cx, cy), with the given unscaled area.
+function VertexShape:_setVertices(xs, ys, n, cx, cy, area)
+  local lx, ly, lnx, lny = {}, {}, {}, {}
+  local r2 = 0
+  for i = 1, n do
+    local x, y = xs[i] - cx, ys[i] - cy
+    lx[i], ly[i] = x, y
+    local d2 = x * x + y * y
+    if d2 > r2 then r2 = d2 end
+  end
+  for i = 1, n do
+    local j = i < n and i + 1 or 1
+    local ex, ey = lx[j] - lx[i], ly[j] - ly[i]
+    local l = sqrt(ex * ex + ey * ey)
+    lnx[i], lny[i] = ey / l, -ex / l
+  end
+  self._n, self._lx, self._ly, self._lnx, self._lny = n, lx, ly, lnx, lny
+  self._wx, self._wy, self._wnx, self._wny = {}, {}, {}, {}
+  self._area, self._radius = area, sqrt(r2)
+  self:_setPose(cx, cy)
+end
+
+function VertexShape:_refresh()
+  local n = self._n
+  local c, s, k = self._cos, self._sin, self._scale
+  local x0, y0 = self._x, self._y
+  local lx, ly, lnx, lny = self._lx, self._ly, self._lnx, self._lny
+  local wx, wy, wnx, wny = self._wx, self._wy, self._wnx, self._wny
+  local minx, miny, maxx, maxy = huge, huge, -huge, -huge
+  local sc, ss = c * k, s * k
+  for i = 1, n do
+    local x, y = lx[i], ly[i]
+    local px, py = x0 + sc * x - ss * y, y0 + ss * x + sc * y
+    wx[i], wy[i] = px, py
+    if px < minx then minx = px end
+    if px > maxx then maxx = px end
+    if py < miny then miny = py end
+    if py > maxy then maxy = py end
+    x, y = lnx[i], lny[i]
+    wnx[i], wny[i] = c * x - s * y, s * x + c * y
+  end
+  self._minx, self._miny, self._maxx, self._maxy = minx, miny, maxx, maxy
+  self._dirty = false
+end
+
+--- Number of vertices (2 for an Edge).
+---@return integer
+function VertexShape:getVertexCount() return self._n end
+
+--- World coordinates of vertex i, or nil when i is out of range (never an error).
+---@param i integer
+---@return number|nil x, number|nil y
+function VertexShape:getVertex(i)
+  if type(i) ~= 'number' or i < 1 or i > self._n or i % 1 ~= 0 then return nil end
+  if self._dirty then self:_refresh() end
+  return self._wx[i], self._wy[i]
+end
+
+--- Edge i (vertex i to vertex i + 1, wrapping), as x1, y1, x2, y2; nil when out of range.
+--- An Edge has two: 1 is p1 to p2, 2 is p2 to p1.
+---@param i integer
+---@return number|nil x1, number|nil y1, number|nil x2, number|nil y2
+function VertexShape:getEdge(i)
+  local n = self._n
+  if type(i) ~= 'number' or i < 1 or i > n or i % 1 ~= 0 then return nil end
+  if self._dirty then self:_refresh() end
+  local j = i < n and i + 1 or 1
+  local wx, wy = self._wx, self._wy
+  return wx[i], wy[i], wx[j], wy[j]
+end
+
+--- Unit outward normal of edge i in world space; nil when out of range.
+---@param i integer
+---@return number|nil nx, number|nil ny
+function VertexShape:getNormal(i)
+  if type(i) ~= 'number' or i < 1 or i > self._n or i % 1 ~= 0 then return nil end
+  if self._dirty then self:_refresh() end
+  return self._wnx[i], self._wny[i]
+end
+
+--- World vertices as a flat list {x1, y1, x2, y2, ...}, ready for love.graphics.polygon.
+--- Fills and returns `out` when given (entries past the vertices are cleared), else a new table.
+---@param out number[]|nil
+---@return number[] vertices, integer count the number of vertices
+function VertexShape:getVertices(out)
+  if self._dirty then self:_refresh() end
+  out = out or {}
+  local n, wx, wy = self._n, self._wx, self._wy
+  for i = 1, n do
+    out[2 * i - 1], out[2 * i] = wx[i], wy[i]
+  end
+  for i = #out, 2 * n + 1, -1 do out[i] = nil end
+  return out, n
+end
+
+--- Minimum and maximum of the shape's projection on the unit vector (nx, ny).
+---@param nx number @param ny number
+---@return number min, number max
+function VertexShape:project(nx, ny)
+  number(nx, 'strike.Shape:project', 'nx')
+  number(ny, 'strike.Shape:project', 'ny')
+  if self._dirty then self:_refresh() end
+  local wx, wy = self._wx, self._wy
+  local lo, hi = huge, -huge
+  for i = 1, self._n do
+    local d = wx[i] * nx + wy[i] * ny
+    if d < lo then lo = d end
+    if d > hi then hi = d end
+  end
+  return lo, hi
+end
+
+--- Index of the vertex farthest along (nx, ny); the lowest index wins ties.
+---@param nx number @param ny number
+---@return integer
+function VertexShape:getSupport(nx, ny)
+  if self._dirty then self:_refresh() end
+  local wx, wy = self._wx, self._wy
+  local best, bi = -huge, 1
+  for i = 1, self._n do
+    local d = wx[i] * nx + wy[i] * ny
+    if d > best then best, bi = d, i end
+  end
+  return bi
+end
+
+--- True when the point is strictly inside (a point on the boundary is not inside; an Edge
+--- has no inside). Takes x, y or a table {x = , y = }.
+---@param x number|table @param y number|nil
+---@return boolean
+function VertexShape:containsPoint(x, y)
+  x, y = Shape._point(x, y, 'strike.Shape:containsPoint')
+  if self._dirty then self:_refresh() end
+  if self._n < 3 then return false end
+  local wx, wy, wnx, wny = self._wx, self._wy, self._wnx, self._wny
+  for i = 1, self._n do
+    if (x - wx[i]) * wnx[i] + (y - wy[i]) * wny[i] >= 0 then return false end
+  end
+  return true
+end
+
+-- Stateless edge iterator: i, x1, y1, x2, y2.
+local function edgeIter(self, i)
+  i = i + 1
+  local n = self._n
+  if i > n then return nil end
+  local j = i < n and i + 1 or 1
+  local wx, wy = self._wx, self._wy
+  return i, wx[i], wy[i], wx[j], wy[j]
+end
+
+--- Iterate over the edges: `for i, x1, y1, x2, y2 in shape:ipairs() do`.
+--- Allocates nothing. The argument is accepted for compatibility and ignored.
+---@return function, strike.VertexShape, integer
+function VertexShape:ipairs()
+  if self._dirty then self:_refresh() end
+  return edgeIter, self, 0
+end
+
+-- Stateless edge-vector iterator: i, dx, dy.
+local function vecIter(self, i)
+  i = i + 1
+  local n = self._n
+  if i > n then return nil end
+  local j = i < n and i + 1 or 1
+  local wx, wy = self._wx, self._wy
+  return i, wx[j] - wx[i], wy[j] - wy[i]
+end
+
+--- Iterate over edge vectors: `for i, dx, dy in shape:vecs() do`. Allocates nothing.
+---@return function, strike.VertexShape, integer
+function VertexShape:vecs()
+  if self._dirty then self:_refresh() end
+  return vecIter, self, 0
+end
+
+--- Largest distance from (px, py) to the shape (to its farthest vertex).
+---@param px number @param py number
+---@return number
+function VertexShape:_farthest(px, py)
+  if self._dirty then self:_refresh() end
+  local wx, wy = self._wx, self._wy
+  local best = 0
+  for i = 1, self._n do
+    local dx, dy = wx[i] - px, wy[i] - py
+    local d = dx * dx + dy * dy
+    if d > best then best = d end
+  end
+  return sqrt(best)
+end
+
+return VertexShape

@@ -1,0 +1,104 @@
+--- Argument validation for the public boundary. Errors are raised at the first stack
+--- frame outside the strike folder, i.e. at the line of the game that made the bad call,
+--- however deep inside strike (constructors called through `Class(...)`, `super.new`)
+--- the check happened. Only the error path pays for the stack walk.
+local check = {}
+
+local getinfo = debug and debug.getinfo
+local huge = math.huge
+
+-- The chunk-name prefix shared by every file of this library, e.g. "@./strike/".
+local PREFIX = getinfo and getinfo(1, 'S').source:match('^(.*[/\\])[^/\\]*$')
+
+--- Raise `msg` at the caller's line: the first function outside the strike folder.
+---@param msg string
+function check.fail(msg)
+  local level = 2
+  if PREFIX then
+    while true do
+      local info = getinfo(level, 'S')
+      if not info then level = 2 break end
+      local src = info.source
+      if info.what ~= 'C' and info.what ~= 'tail' and src:sub(1, #PREFIX) ~= PREFIX then break end
+      level = level + 1
+    end
+    -- error() counts its own caller (this function) as level 1.
+    level = level - 1
+  end
+  error(msg, level + 1)
+end
+
+--- A short, readable description of any value for error messages.
+---@param v any
+---@return string
+function check.describe(v)
+  local t = type(v)
+  if t == 'number' then
+    if v ~= v then return 'nan' end
+    if v == huge then return 'inf' end
+    if v == -huge then return '-inf' end
+    return tostring(v)
+  elseif t == 'string' then
+    return ('string %q'):format(#v > 40 and v:sub(1, 40) .. '...' or v)
+  elseif t == 'nil' or t == 'boolean' then
+    return tostring(v)
+  end
+  return t
+end
+
+--- True for a number that is neither NaN nor infinite.
+---@param v any
+---@return boolean
+local function finite(v)
+  return type(v) == 'number' and v - v == 0
+end
+check.finite = finite
+
+--- Require a finite number.
+---@param v any @param fname string @param what string
+---@return number
+function check.number(v, fname, what)
+  if not finite(v) then
+    check.fail(('%s: %s must be a finite number, got %s'):format(fname, what, check.describe(v)))
+  end
+  return v
+end
+
+--- Require a finite number, or nil (then return `default`).
+---@param v any @param fname string @param what string @param default any
+---@return any
+function check.optNumber(v, fname, what, default)
+  if v == nil then return default end
+  return check.number(v, fname, what)
+end
+
+--- Require a finite number > 0.
+---@param v any @param fname string @param what string
+---@return number
+function check.positive(v, fname, what)
+  if not finite(v) or v <= 0 then
+    check.fail(('%s: %s must be a finite number > 0, got %s'):format(fname, what, check.describe(v)))
+  end
+  return v
+end
+
+--- Require an integer in [lo, hi].
+---@param v any @param fname string @param what string @param lo integer @param hi integer
+---@return integer
+function check.integer(v, fname, what, lo, hi)
+  if not finite(v) or v % 1 ~= 0 or v < lo or v > hi then
+    check.fail(('%s: %s must be an integer from %d to %d, got %s'):format(fname, what, lo, hi, check.describe(v)))
+  end
+  return v
+end
+
+--- Either both of an optional reference point are given, or neither.
+---@return number|nil, number|nil
+function check.optPoint(x, y, fname)
+  if x == nil and y == nil then return nil, nil end
+  check.number(x, fname, 'reference x')
+  check.number(y, fname, 'reference y')
+  return x, y
+end
+
+return check

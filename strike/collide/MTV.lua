@@ -1,0 +1,84 @@
+--- The result of a collision test: the minimum translation vector and who it belongs to.
+---
+--- Orientation: for S.AT(a, b) and S.triking(a, b) the vector points from the first
+--- argument toward the second, so moving the second by +(x, y), or the first by -(x, y),
+--- separates them (they end up exactly touching).
+local ROOT = (...):match('^(.-)%.collide%.[^%.]+$')
+local Object = require(ROOT .. '.class')
+
+local sqrt = math.sqrt
+
+---@class strike.MTV : strike.Object
+---@field x number translation vector, x: normal times depth when colliding; when separating, the
+--- separating axis times the gap found along it (a lower bound of the distance)
+---@field y number translation vector, y
+---@field nx number unit normal, x, from the first argument toward the second (also set when separating)
+---@field ny number unit normal, y
+---@field depth number penetration depth, > 0 when colliding; when separating, minus the gap (<= 0)
+---@field separating boolean true when the shapes do not collide (touching is not colliding)
+---@field collider table outermost collider of the first argument (the shape itself if it has none)
+---@field collided table outermost collider of the second argument
+---@field colliderShape strike.Shape the leaf shape of the first argument
+---@field collidedShape strike.Shape the leaf shape of the second argument
+---@field edgeIndex integer i > 0: edge i of colliderShape gave the axis; -j: edge j of collidedShape
+--- did; 0: the axis came from a circle (centre to centre, or centre to a vertex)
+local MTV = Object:extend()
+MTV.name = 'MTV'
+
+--- A new MTV: vector (dx, dy) (default 0, 0) between two shapes.
+---@param dx number|nil @param dy number|nil
+---@param colliderShape strike.Shape|nil @param collidedShape strike.Shape|nil
+---@param separating boolean|nil
+function MTV:new(dx, dy, colliderShape, collidedShape, separating)
+  dx, dy = dx or 0, dy or 0
+  self.x, self.y = dx, dy
+  local l = sqrt(dx * dx + dy * dy)
+  if l > 0 then self.nx, self.ny = dx / l, dy / l else self.nx, self.ny = 0, 0 end
+  self.separating = separating and true or false
+  self.depth = self.separating and -l or l
+  self.colliderShape, self.collidedShape = colliderShape, collidedShape
+  self.collider, self.collided = colliderShape, collidedShape
+  self.edgeIndex = 0
+end
+
+--- Length of the vector.
+---@return number
+function MTV:mag() return sqrt(self.x * self.x + self.y * self.y) end
+
+--- Squared length of the vector.
+---@return number
+function MTV:mag2() return self.x * self.x + self.y * self.y end
+
+--- Multiply the vector by s (the normal keeps its direction when s > 0).
+---@param s number
+---@return self
+function MTV:scale(s)
+  self.x, self.y = self.x * s, self.y * s
+  return self
+end
+
+---@param collider table @return self
+function MTV:setCollider(collider) self.collider = collider return self end
+---@param collided table @return self
+function MTV:setCollided(collided) self.collided = collided return self end
+---@param shape strike.Shape @return self
+function MTV:setColliderShape(shape) self.colliderShape = shape return self end
+---@param shape strike.Shape @return self
+function MTV:setCollidedShape(shape) self.collidedShape = shape return self end
+---@param index integer @return self
+function MTV:setEdgeIndex(index) self.edgeIndex = index return self end
+---@param separating boolean @return self
+function MTV:setSeparating(separating) self.separating = separating and true or false return self end
+
+--- Copy every field of `other` into this MTV.
+---@param other strike.MTV
+---@return self
+function MTV:set(other)
+  self.x, self.y, self.nx, self.ny, self.depth = other.x, other.y, other.nx, other.ny, other.depth
+  self.separating, self.edgeIndex = other.separating, other.edgeIndex
+  self.collider, self.collided = other.collider, other.collided
+  self.colliderShape, self.collidedShape = other.colliderShape, other.collidedShape
+  return self
+end
+
+return MTV

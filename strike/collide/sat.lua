@@ -1,0 +1,123 @@
+--- Narrow phase for convex pairs, all writing into an MTV-shaped `out` table and
+--- allocating nothing.
+---
+--- Polygons (and edges, as two-vertex polygons) use the separating axis theorem in its
+--- one-sided form (Box2D's b2FindMaxSeparation, Catto, "Contact Manifolds", GDC 2007):
+--- for each face i of A, sep_i = min over B's vertices v of n_i . (v - a_i). The largest
+--- sep over both shapes' faces is minus the penetration depth; its face normal is the MTV
+--- axis. The face normals of A and the negated face normals of B are exactly the face
+--- normals of the Minkowski difference A - B, so this is the exact minimum translation,
+--- and its sign comes from the face, never from the centroids.
+--- Circle against polygon uses the closest feature (face, or vertex Voronoi region), as in
+--- Box2D's b2CollidePolygonAndCircle; circle against circle uses the centre line.
+---
+--- Touching (depth exactly 0) is not a collision.
+local sat = {}
+
+local sqrt, huge = math.sqrt, math.huge
+
+-- The outermost collider of a shape, or the shape itself.
+local function root(s)
+  local p = s.parent
+  while p do s, p = p, p.parent end
+  return s
+end
+sat.root = root
+
+-- Fill `out`. (nx, ny) is the unit normal from a to b, depth > 0 means overlap.
+local function result(out, a, b, nx, ny, depth, edge)
+  local m = depth > 0 and depth or -depth
+  out.x, out.y, out.nx, out.ny, out.depth = nx * m, ny * m, nx, ny, depth
+  out.separating = not (depth > 0) -- luacheck: ignore 581 (NaN depth must read as separating)
+  out.edgeIndex = edge
+  out.colliderShape, out.collidedShape = a, b
+  out.collider, out.collided = root(a), root(b)
+  return out
+end
+sat.result = result
+
+--- Largest, over A's faces, of the smallest signed distance of B's vertices in front of
+--- the face; stops early at the first face with nothing of B behind it (>= 0).
+---@return number separation, integer face
+local function maxSeparation(A, B)
+  local ax, ay, anx, any = A._wx, A._wy, A._wnx, A._wny
+  local bx, by, nb = B._wx, B._wy, B._n
+  local best, bi = -huge, 1
+  for i = 1, A._n do
+    local nx, ny, vx, vy = anx[i], any[i], ax[i], ay[i]
+    local s = huge
+    for j = 1, nb do
+      local d = nx * (bx[j] - vx) + ny * (by[j] - vy)
+      if d < s then s = d end
+    end
+    if s > best then
+      best, bi = s, i
+      if s >= 0 then return s, i end
+    end
+  end
+  return best, bi
+end
+sat.maxSeparation = maxSeparation
+
+--- Polygon (or edge) A against polygon (or edge) B.
+function sat.polygonPolygon(A, B, out)
+  if A._dirty then A:_refresh() end
+  if B._dirty then B:_refresh() end
+  local sA, iA = maxSeparation(A, B)
+  if sA >= 0 then return result(out, A, B, A._wnx[iA], A._wny[iA], -sA, iA) end
+  local sB, iB = maxSeparation(B, A)
+  if sB > sA then
+    return result(out, A, B, -B._wnx[iB], -B._wny[iB], -sB, -iB)
+  end
+  return result(out, A, B, A._wnx[iA], A._wny[iA], -sA, iA)
+end
+
+-- Polygon P against circle C; when `flip`, report it as C against P.
+local function polygonCircle(P, C, out, flip)
+  if P._dirty then P:_refresh() end
+  local cx, cy, r = C._x, C._y, C._r * C._scale
+  local n, wx, wy, wnx, wny = P._n, P._wx, P._wy, P._wnx, P._wny
+  local best, bi = -huge, 1
+  for i = 1, n do
+    local s = wnx[i] * (cx - wx[i]) + wny[i] * (cy - wy[i])
+    if s > best then
+      best, bi = s, i
+      if s >= r then break end
+    end
+  end
+  local nx, ny, depth, edge = wnx[bi], wny[bi], r - best, bi
+  if best > 0 and best < r then
+    -- the centre is outside face bi: the closest feature is the face or one of its ends
+    local j = bi < n and bi + 1 or 1
+    local x1, y1, x2, y2 = wx[bi], wy[bi], wx[j], wy[j]
+    local vx, vy
+    if (cx - x1) * (x2 - x1) + (cy - y1) * (y2 - y1) <= 0 then
+      vx, vy = x1, y1
+    elseif (cx - x2) * (x1 - x2) + (cy - y2) * (y1 - y2) <= 0 then
+      vx, vy = x2, y2
+    end
+    if vx then
+      local dx, dy = cx - vx, cy - vy
+      local d = sqrt(dx * dx + dy * dy)
+      nx, ny, depth, edge = dx / d, dy / d, r - d, 0
+    end
+  end
+  if flip then return result(out, C, P, -nx, -ny, depth, -edge) end
+  return result(out, P, C, nx, ny, depth, edge)
+end
+
+function sat.polygonCircle(P, C, out) return polygonCircle(P, C, out, false) end
+function sat.circlePolygon(C, P, out) return polygonCircle(P, C, out, true) end
+
+--- Circle against circle. Concentric circles get the normal (0, -1).
+function sat.circleCircle(A, B, out)
+  local dx, dy = B._x - A._x, B._y - A._y
+  local d = sqrt(dx * dx + dy * dy)
+  local r = A._r * A._scale + B._r * B._scale
+  if d > 0 then
+    return result(out, A, B, dx / d, dy / d, r - d, 0)
+  end
+  return result(out, A, B, 0, -1, r, 0)
+end
+
+return sat

@@ -1,0 +1,72 @@
+--- A capsule (stadium): a rectangle with a half-disc on each end.
+local ROOT = (...):match('^(.-)%.colliders%.[^%.]+$')
+local Collider = require(ROOT .. '.colliders.Collider')
+local Circle = require(ROOT .. '.shapes.Circle')
+local Rectangle = require(ROOT .. '.shapes.Rectangle')
+local check = require(ROOT .. '.check')
+
+local sqrt, pi = math.sqrt, math.pi
+
+---@class strike.Capsule : strike.Collider
+local Capsule = Collider:extend()
+Capsule.name = 'Capsule'
+
+--- A capsule centred on (x, y), `dx` wide and `dy` tall **including** both caps
+--- (dy >= dx; the caps have radius dx / 2), turned by `angle`. Unrotated, the caps sit
+--- on the vertical axis. Children: the two cap circles (-y end first), then the
+--- rectangle between them (none when dy == dx: the capsule is then one circle).
+---@param x number @param y number @param dx number @param dy number @param angle number|nil
+function Capsule:new(x, y, dx, dy, angle)
+  check.number(x, 'strike.Capsule', 'x')
+  check.number(y, 'strike.Capsule', 'y')
+  check.positive(dx, 'strike.Capsule', 'width')
+  check.positive(dy, 'strike.Capsule', 'height')
+  angle = check.optNumber(angle, 'strike.Capsule', 'angle', 0)
+  if dy < dx then
+    check.fail(('strike.Capsule: height (caps included) must be at least the width, got width %s and height %s')
+      :format(dx, dy))
+  end
+  Collider.new(self)
+  local r, h = dx / 2, (dy - dx) / 2
+  if h > 0 then
+    self:add(Circle(x, y - h, r), Circle(x, y + h, r), Rectangle(x, y, dx, dy - dx))
+  else
+    self:add(Circle(x, y, r))
+  end
+  if angle ~= 0 then self:rotate(angle) end
+end
+
+-- Cap radius and the distance between the cap centres, from the current leaves.
+local function caps(self)
+  local a, b = self.shapes[1], self.shapes[2]
+  if not a or a.kind ~= 'circle' then return nil end
+  if not b or b.kind ~= 'circle' then return a:getRadius(), 0 end
+  local dx, dy = b._x - a._x, b._y - a._y
+  return a:getRadius(), sqrt(dx * dx + dy * dy)
+end
+
+--- The capsule's true area, pi r^2 + 2 r L (its members overlap, so the sum of their areas
+--- would count the caps twice).
+---@return number
+function Capsule:getArea()
+  local r, l = caps(self)
+  if not r then return Collider.getArea(self) end
+  return pi * r * r + 2 * r * l
+end
+
+--- Area and centroid together.
+---@return number area, number x, number y
+function Capsule:getAreaCentroid()
+  local x, y = self:getCentroid()
+  return self:getArea(), x, y
+end
+
+--- Width and height (caps included), as they are now.
+---@return number width, number height
+function Capsule:getDimensions()
+  local r, l = caps(self)
+  if not r then return 0, 0 end
+  return 2 * r, 2 * r + l
+end
+
+return Capsule

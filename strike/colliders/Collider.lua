@@ -1,0 +1,460 @@
+--- A Collider is a tree of shapes and colliders that move together. Its members never
+--- collide with each other. Area, centroid, radius and bounds are aggregates of the leaf
+--- shapes, cached and recomputed on the next query after anything in the tree changes.
+---
+--- Cache protocol: `_clean` is true while the aggregates are valid. A change to a leaf or
+--- to the structure clears `_clean` on every enclosing collider (Shape:_touch); a refresh
+--- recomputes bottom-up, so a clean collider never holds a stale nested one.
+local ROOT = (...):match('^(.-)%.colliders%.[^%.]+$')
+local Object = require(ROOT .. '.class')
+local Shape = require(ROOT .. '.base.Shape')
+local check = require(ROOT .. '.check')
+local unpack = require(ROOT .. '.compat').unpack
+
+local cos, sin, huge = math.cos, math.sin, math.huge
+local number, positive, optPoint, fail, describe = check.number, check.positive, check.optPoint, check.fail,
+  check.describe
+
+---@class strike.Collider : strike.Object
+---@field shapes (strike.Shape|strike.Collider)[] the direct children, in order
+---@field parent strike.Collider|nil the enclosing collider, if any
+---@field type string always 'collider'
+local Collider = Object:extend()
+Collider.type = 'collider'
+Collider.name = 'Collider'
+
+local function isShape(v) return type(v) == 'table' and getmetatable(v) ~= nil and Object.is(v, Shape) end
+local function isCollider(v) return type(v) == 'table' and getmetatable(v) ~= nil and Object.is(v, Collider) end
+Collider._isShape, Collider._isCollider = isShape, isCollider
+
+--- A collider holding the given shapes and colliders (any number, nested to any depth).
+---@param ... strike.Shape|strike.Collider
+function Collider:new(...)
+  self.shapes = {}
+  self._angle = 0
+  self:add(...)
+end
+
+-- Clear `_clean` here and on every enclosing collider. If a collider is not clean, none
+-- of its ancestors is, so the walk stops at the first one already marked.
+local function invalidate(self)
+  self._clean = false
+  local p = self.parent
+  while p and p._clean do
+    p._clean = false
+    p = p.parent
+  end
+end
+
+--- Add shapes and colliders as children. A child may belong to one collider only.
+---@param ... strike.Shape|strike.Collider
+---@return self
+function Collider:add(...)
+  local shapes = self.shapes
+  if not shapes then shapes = {}; self.shapes = shapes end
+  for i = 1, select('#', ...) do
+    local child = select(i, ...)
+    if not (isShape(child) or isCollider(child)) then
+      fail(('strike.Collider:add: argument %d must be a strike shape or collider, got %s'):format(i, describe(child)))
+    end
+    if child.parent then
+      fail(('strike.Collider:add: argument %d already belongs to a collider; remove it first or add a copy'):format(i))
+    end
+    local p = self
+    while p do
+      if p == child then fail(('strike.Collider:add: argument %d would contain itself'):format(i)) end
+      p = p.parent
+    end
+  end
+  for i = 1, select('#', ...) do
+    local child = select(i, ...)
+    child.parent = self
+    shapes[#shapes + 1] = child
+  end
+  invalidate(self)
+  return self
+end
+
+--- Remove the children at the given indices (numbered as before the call) and return them,
+--- in the order asked. Each removed child is free to be added elsewhere.
+---@param index integer @param ... integer
+---@return strike.Shape|strike.Collider ...
+function Collider:remove(index, ...)
+  local shapes = self.shapes or {}
+  local n = #shapes
+  local idx = { index, ... }
+  local count = select('#', ...) + 1
+  local seen = {}
+  for i = 1, count do
+    local k = idx[i]
+    check.integer(k, 'strike.Collider:remove', 'index', 1, n)
+    if seen[k] then fail(('strike.Collider:remove: index %d given twice'):format(k)) end
+    seen[k] = true
+  end
+  local removed = {}
+  for i = 1, count do removed[i] = shapes[idx[i]] end
+  local j = 0
+  for i = 1, n do
+    local c = shapes[i]
+    shapes[i] = nil
+    if seen[i] then
+      c.parent = nil
+    else
+      j = j + 1
+      shapes[j] = c
+    end
+  end
+  invalidate(self)
+  return unpack(removed, 1, count)
+end
+
+--- The direct children (shapes and colliders), not copies.
+---@return strike.Shape|strike.Collider ...
+function Collider:unpack()
+  local shapes = self.shapes or {}
+  return unpack(shapes, 1, #shapes)
+end
+
+-- Recompute leaves, area, centroid, radius and bounds, bottom-up.
+local function refresh(self)
+  local shapes = self.shapes or {}
+  local leaves, pos = self._leaves, self._leafPos
+  if not leaves then leaves, pos = {}, {}; self._leaves, self._leafPos = leaves, pos end
+  for k in pairs(pos) do pos[k] = nil end
+  local nl = 0
+  local area, ax, ay, len, lx, ly = 0, 0, 0, 0, 0, 0
+  local minx, miny, maxx, maxy = huge, huge, -huge, -huge
+  for i = 1, #shapes do
+    local c = shapes[i]
+    if c.shapes then
+      if not c._clean then refresh(c) end
+      local cl = c._leaves
+      for k = 1, c._nleaves do
+        nl = nl + 1
+        leaves[nl] = cl[k]
+        pos[cl[k]] = nl
+      end
+    else
+      nl = nl + 1
+      leaves[nl] = c
+      pos[c] = nl
+    end
+  end
+  for i = #leaves, nl + 1, -1 do leaves[i] = nil end
+  for i = 1, nl do
+    local s = leaves[i]
+    local a = s:getArea()
+    local x, y = s._x, s._y
+    if a > 0 then
+      area, ax, ay = area + a, ax + a * x, ay + a * y
+    else
+      local l = 2 * s:getRadius()
+      len, lx, ly = len + l, lx + l * x, ly + l * y
+    end
+    local x0, y0, x1, y1 = s:getBounds()
+    if x0 < minx then minx = x0 end
+    if y0 < miny then miny = y0 end
+    if x1 > maxx then maxx = x1 end
+    if y1 > maxy then maxy = y1 end
+  end
+  local cx, cy = 0, 0
+  if area > 0 then
+    cx, cy = ax / area, ay / area
+  elseif len > 0 then
+    cx, cy = lx / len, ly / len
+  end
+  if nl == 0 then minx, miny, maxx, maxy = 0, 0, 0, 0 end
+  local r = 0
+  for i = 1, nl do
+    local d = leaves[i]:_farthest(cx, cy)
+    if d > r then r = d end
+  end
+  self._nleaves, self._area, self._cx, self._cy, self._radius = nl, area, cx, cy, r
+  self._minx, self._miny, self._maxx, self._maxy = minx, miny, maxx, maxy
+  if not self._angle then self._angle = 0 end
+  self._clean = true
+end
+Collider._refresh = refresh
+
+--- Recompute area and centroid now (they are also kept up to date automatically).
+---@return self
+function Collider:calcAreaCentroid()
+  self._clean = false
+  refresh(self)
+  return self
+end
+
+--- Recompute the radius now (it is also kept up to date automatically).
+---@return self
+Collider.calcRadius = Collider.calcAreaCentroid
+
+--- Total area of the leaf shapes (overlapping members count twice; edges add nothing).
+---@return number
+function Collider:getArea()
+  if not self._clean then refresh(self) end
+  return self._area
+end
+
+--- Centroid: the area-weighted mean of the leaves' centroids; for colliders of edges
+--- only, the length-weighted mean of their midpoints; (0, 0) when empty.
+---@return number x, number y
+function Collider:getCentroid()
+  if not self._clean then refresh(self) end
+  return self._cx, self._cy
+end
+
+--- Area and centroid together.
+---@return number area, number x, number y
+function Collider:getAreaCentroid()
+  if not self._clean then refresh(self) end
+  return self:getArea(), self._cx, self._cy
+end
+
+--- Radius of the smallest circle about the centroid that holds every leaf.
+---@return number
+function Collider:getRadius()
+  if not self._clean then refresh(self) end
+  return self._radius
+end
+
+--- Bounds of all leaves as minimum x, minimum y, width, height; (0, 0, 0, 0) when empty.
+---@return number x, number y, number w, number h
+function Collider:getBbox()
+  if not self._clean then refresh(self) end
+  return self._minx, self._miny, self._maxx - self._minx, self._maxy - self._miny
+end
+
+--- Bounds of all leaves as minimum x, minimum y, maximum x, maximum y.
+---@return number minx, number miny, number maxx, number maxy
+function Collider:getBounds()
+  if not self._clean then refresh(self) end
+  return self._minx, self._miny, self._maxx, self._maxy
+end
+
+--- The angle: the sum of every rotation applied to this collider (or given to its
+--- constructor, for single-shape colliders and Capsules).
+---@return number
+function Collider:getAngle() return self._angle or 0 end
+
+--- Number of leaf shapes in the whole tree.
+---@return integer
+function Collider:getShapeCount()
+  if not self._clean then refresh(self) end
+  return self._nleaves
+end
+
+--- The outermost collider holding this one (itself when it has no parent).
+---@return strike.Collider
+Collider.getRoot = Shape.getRoot
+
+-- Stateless leaf iterator: the control variable is the previous leaf.
+local function elemsIter(self, prev)
+  local i = prev and self._leafPos[prev] or 0
+  return self._leaves[i + 1]
+end
+
+--- Iterate over every leaf shape, nested or not, depth first in insertion order:
+--- `for shape in collider:elems() do`. Allocates nothing.
+---@return function, strike.Collider, nil
+function Collider:elems()
+  if not self._clean then refresh(self) end
+  return elemsIter, self, nil
+end
+
+--- Iterate over every leaf with its direct parent and its index in that parent:
+--- `for parent, shape, index in collider:ipairs() do`. Makes one closure per call.
+---@return function
+function Collider:ipairs()
+  if not self._clean then refresh(self) end
+  local leaves, i = self._leaves, 0
+  return function()
+    i = i + 1
+    local s = leaves[i]
+    if not s then return nil end
+    local p = s.parent
+    local shapes = p.shapes
+    for k = 1, #shapes do
+      if shapes[k] == s then return p, s, k end
+    end
+  end
+end
+
+--- Minimum and maximum of the projection of every leaf on the unit vector (nx, ny).
+---@param nx number @param ny number
+---@return number min, number max
+function Collider:project(nx, ny)
+  number(nx, 'strike.Collider:project', 'nx')
+  number(ny, 'strike.Collider:project', 'ny')
+  if not self._clean then refresh(self) end
+  local lo, hi = huge, -huge
+  local leaves = self._leaves
+  for i = 1, self._nleaves do
+    local a, b = leaves[i]:project(nx, ny)
+    if a < lo then lo = a end
+    if b > hi then hi = b end
+  end
+  return lo, hi
+end
+
+--- True when the point is strictly inside some leaf. Takes x, y or {x = , y = }.
+---@param x number|table @param y number|nil
+---@return boolean
+function Collider:containsPoint(x, y)
+  x, y = Shape._point(x, y, 'strike.Collider:containsPoint')
+  if not self._clean then refresh(self) end
+  local leaves = self._leaves
+  for i = 1, self._nleaves do
+    if leaves[i]:containsPoint(x, y) then return true end
+  end
+  return false
+end
+
+-- Apply fn(leaf, ...) to every leaf and fix the collider bookkeeping.
+local function eachLeaf(self, fn, a, b, c)
+  if not self._clean then refresh(self) end
+  local leaves = self._leaves
+  for i = 1, self._nleaves do fn(leaves[i], a, b, c) end
+end
+
+local function moveLeaf(s, dx, dy)
+  s._x, s._y = s._x + dx, s._y + dy
+  s:_touch()
+end
+
+local function rotateLeaf(s, a, rx, ry)
+  local angle = s._angle + a
+  s._angle, s._cos, s._sin = angle, cos(angle), sin(angle)
+  local c, sn = cos(a), sin(a)
+  local dx, dy = s._x - rx, s._y - ry
+  s._x, s._y = rx + c * dx - sn * dy, ry + sn * dx + c * dy
+  s:_touch()
+end
+
+local function scaleLeaf(s, sf, rx, ry)
+  s._scale = s._scale * sf
+  s._x, s._y = rx + (s._x - rx) * sf, ry + (s._y - ry) * sf
+  s:_touch()
+end
+
+local function addAngle(self, a)
+  self._angle = (self._angle or 0) + a
+  local shapes = self.shapes or {}
+  for i = 1, #shapes do
+    if shapes[i].shapes then addAngle(shapes[i], a) end
+  end
+end
+
+--- Move every shape by (dx, dy).
+---@param dx number @param dy number
+---@return self
+function Collider:translate(dx, dy)
+  number(dx, 'strike.Collider:translate', 'dx')
+  number(dy, 'strike.Collider:translate', 'dy')
+  eachLeaf(self, moveLeaf, dx, dy)
+  return self
+end
+
+--- Move so that the centroid is at (x, y).
+---@param x number @param y number
+---@return self
+function Collider:translateTo(x, y)
+  number(x, 'strike.Collider:translateTo', 'x')
+  number(y, 'strike.Collider:translateTo', 'y')
+  local cx, cy = self:getCentroid()
+  eachLeaf(self, moveLeaf, x - cx, y - cy)
+  return self
+end
+
+--- Rotate by `angle` radians about (refx, refy), by default the centroid.
+---@param angle number @param refx number|nil @param refy number|nil
+---@return self
+function Collider:rotate(angle, refx, refy)
+  number(angle, 'strike.Collider:rotate', 'angle')
+  refx, refy = optPoint(refx, refy, 'strike.Collider:rotate')
+  if not refx then refx, refy = self:getCentroid() end
+  eachLeaf(self, rotateLeaf, angle, refx, refy)
+  addAngle(self, angle)
+  return self
+end
+
+--- Rotate to the absolute `angle` about (refx, refy), by default the centroid.
+---@param angle number @param refx number|nil @param refy number|nil
+---@return self
+function Collider:rotateTo(angle, refx, refy)
+  number(angle, 'strike.Collider:rotateTo', 'angle')
+  refx, refy = optPoint(refx, refy, 'strike.Collider:rotateTo')
+  if not refx then refx, refy = self:getCentroid() end
+  local a = angle - (self._angle or 0)
+  eachLeaf(self, rotateLeaf, a, refx, refy)
+  addAngle(self, a)
+  return self
+end
+
+--- Scale by `sf` (> 0) about (refx, refy), by default the centroid. Calls compose.
+---@param sf number @param refx number|nil @param refy number|nil
+---@return self
+function Collider:scale(sf, refx, refy)
+  positive(sf, 'strike.Collider:scale', 'factor')
+  refx, refy = optPoint(refx, refy, 'strike.Collider:scale')
+  if not refx then refx, refy = self:getCentroid() end
+  eachLeaf(self, scaleLeaf, sf, refx, refy)
+  return self
+end
+
+--- An independent deep copy of the same class (children copied, parent links rebuilt);
+--- then, if given, moved so its centroid is at (x, y) and rotated to `angle`.
+---@param x number|nil @param y number|nil @param angle number|nil
+---@return strike.Collider
+function Collider:copy(x, y, angle)
+  local c = setmetatable({}, getmetatable(self))
+  for k, v in pairs(self) do
+    if k ~= 'parent' and k ~= 'shapes' and k ~= '_leaves' and k ~= '_leafPos' then c[k] = Shape._clone(v) end
+  end
+  c._clean, c.shapes = false, {}
+  local shapes = self.shapes or {}
+  for i = 1, #shapes do
+    local child = shapes[i]:copy()
+    child.parent = c
+    c.shapes[i] = child
+  end
+  if x ~= nil or y ~= nil then c:translateTo(x, y) end
+  if angle ~= nil then c:rotateTo(angle) end
+  return c
+end
+
+--- Merge adjacent convex polygons among the direct children wherever their union is
+--- convex (recursing into nested colliders); the merged piece replaces the first of the
+--- two in order. Circles and edges are left alone.
+---@return self
+function Collider:consolidate()
+  local shapes = self.shapes or {}
+  for i = 1, #shapes do
+    if shapes[i].shapes then shapes[i]:consolidate() end
+  end
+  local merged = true
+  while merged do
+    merged = false
+    for i = 1, #shapes - 1 do
+      local a = shapes[i]
+      if a.merge then
+        for j = i + 1, #shapes do
+          local b = shapes[j]
+          local m = b.merge and a:merge(b)
+          if m then
+            a.parent, b.parent = nil, nil
+            m.parent = self
+            shapes[i] = m
+            table.remove(shapes, j)
+            merged = true
+            break
+          end
+        end
+      end
+      if merged then break end
+    end
+  end
+  invalidate(self)
+  return self
+end
+
+return Collider

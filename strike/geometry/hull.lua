@@ -1,0 +1,95 @@
+--- Convex hull of a point set (Andrew's monotone chain, A. M. Andrew 1979, "Another
+--- efficient algorithm for convex hulls in two dimensions"), dropping duplicate and
+--- collinear points, plus the test that tells a convex outline from a concave one.
+local hull = {}
+
+local sqrt = math.sqrt
+
+-- Relative tolerance for "collinear": |cross(a - o, b - o)| <= EPS * |a - o| * |b - o|,
+-- i.e. the sine of the turn is below EPS.
+local EPS = 1e-10
+hull.EPS = EPS
+
+-- Left turn o -> a -> b, strictly beyond the tolerance.
+local function leftTurn(ox, oy, ax, ay, bx, by)
+  local ux, uy, vx, vy = ax - ox, ay - oy, bx - ox, by - oy
+  local c = ux * vy - uy * vx
+  return c > EPS * sqrt((ux * ux + uy * uy) * (vx * vx + vy * vy))
+end
+hull.leftTurn = leftTurn
+
+--- Hull of the points (xs[i], ys[i]), i = 1..n, in positive winding (positive shoelace
+--- area), without duplicate or collinear vertices.
+---@param xs number[] @param ys number[] @param n integer
+---@return number[] hx, number[] hy, integer count, integer distinct number of distinct input points
+function hull.build(xs, ys, n)
+  local idx = {}
+  for i = 1, n do idx[i] = i end
+  table.sort(idx, function(a, b)
+    local xa, xb = xs[a], xs[b]
+    if xa ~= xb then return xa < xb end
+    local ya, yb = ys[a], ys[b]
+    if ya ~= yb then return ya < yb end
+    return a < b
+  end)
+  -- drop exact duplicates
+  local px, py, m = {}, {}, 0
+  for k = 1, n do
+    local i = idx[k]
+    if m == 0 or xs[i] ~= px[m] or ys[i] ~= py[m] then
+      m = m + 1
+      px[m], py[m] = xs[i], ys[i]
+    end
+  end
+  local hx, hy, h = {}, {}, 0
+  if m < 3 then
+    for i = 1, m do hx[i], hy[i] = px[i], py[i] end
+    return hx, hy, m, m
+  end
+  -- lower chain, then upper chain
+  for i = 1, m do
+    while h >= 2 and not leftTurn(hx[h - 1], hy[h - 1], hx[h], hy[h], px[i], py[i]) do h = h - 1 end
+    h = h + 1
+    hx[h], hy[h] = px[i], py[i]
+  end
+  local lower = h + 1
+  for i = m - 1, 1, -1 do
+    while h >= lower and not leftTurn(hx[h - 1], hy[h - 1], hx[h], hy[h], px[i], py[i]) do h = h - 1 end
+    h = h + 1
+    hx[h], hy[h] = px[i], py[i]
+  end
+  h = h - 1 -- the last point repeats the first
+  for i = #hx, h + 1, -1 do hx[i], hy[i] = nil, nil end
+  return hx, hy, h, m
+end
+
+--- True when (x, y) lies strictly inside the convex polygon hx, hy (count h, positive
+--- winding), farther than the collinearity tolerance from every edge.
+---@return boolean
+function hull.strictlyInside(hx, hy, h, x, y)
+  for i = 1, h do
+    local j = i < h and i + 1 or 1
+    local ex, ey = hx[j] - hx[i], hy[j] - hy[i]
+    local px, py = x - hx[i], y - hy[i]
+    local c = ex * py - ey * px
+    if c <= EPS * sqrt((ex * ex + ey * ey) * (px * px + py * py)) then return false end
+  end
+  return true
+end
+
+--- Rotate the hull in place so that it starts at the vertex equal to (x, y), if any.
+function hull.startAt(hx, hy, h, x, y)
+  local s
+  for i = 1, h do
+    if hx[i] == x and hy[i] == y then s = i break end
+  end
+  if not s or s == 1 then return end
+  local tx, ty = {}, {}
+  for i = 1, h do
+    local j = (i + s - 2) % h + 1
+    tx[i], ty[i] = hx[j], hy[j]
+  end
+  for i = 1, h do hx[i], hy[i] = tx[i], ty[i] end
+end
+
+return hull

@@ -1,0 +1,181 @@
+--- strike: 2D collision detection for LÖVE and any Lua (5.1, 5.2, 5.3, 5.4, LuaJIT).
+--- Separating-axis tests between convex shapes, grouped into colliders.
+---
+--- Conventions (README, "Conventions"):
+---  * coordinates are plain numbers; with LÖVE, y grows downward;
+---  * polygons are stored in positive winding (positive shoelace area: counter-clockwise
+---    with y up, clockwise on a LÖVE screen); edge normals point outward;
+---  * an MTV from S.AT(a, b) or S.triking(a, b) points from a toward b: moving b by +mtv,
+---    or a by -mtv, separates them;
+---  * touching is not colliding: shapes that only share boundary points do not collide.
+local ROOT = (...):gsub('%.init$', '')
+
+local registry = require(ROOT .. '.registry')
+local MTV = require(ROOT .. '.collide.MTV')
+local dispatch = require(ROOT .. '.collide.dispatch')
+local check = require(ROOT .. '.check')
+
+local describe, fail = check.describe, check.fail
+
+---@class strike
+local S = {
+  _VERSION = 'strike 0.1.0',
+  _DESCRIPTION = '2D collision detection for LÖVE and any Lua: convex shapes, colliders, SAT',
+  _LICENSE = 'MIT',
+}
+
+S.hapes, S.trikers = registry.new()
+S.MTV = MTV
+
+-- Built-in classes, registered eagerly so that pairs(S.hapes) lists them.
+for _, name in ipairs({ 'ConvexPolygon', 'Circle', 'Edge', 'Ellipse', 'Rectangle', 'RegularPolygon' }) do
+  S.hapes[name] = require(ROOT .. '.shapes.' .. name)
+  local _ = S.trikers[name]
+end
+for _, name in ipairs({ 'Capsule', 'Concave' }) do
+  S.trikers[name] = require(ROOT .. '.colliders.' .. name)
+end
+
+local function badShape(fname, i, v)
+  if type(v) == 'table' and v.type == 'collider' then
+    fail(('%s: argument %d must be a shape, got a collider (use S.triking for colliders)'):format(fname, i))
+  end
+  fail(('%s: argument %d must be a strike shape, got %s'):format(fname, i, describe(v)))
+end
+
+local function checkOut(fname, out, i)
+  if out ~= nil and type(out) ~= 'table' then
+    fail(('%s: argument %d (out) must be a table such as S.MTV(), got %s'):format(fname, i, describe(out)))
+  end
+end
+
+--- Separating-axis test between two convex shapes. Always returns an MTV (filled into
+--- `out` when given); check `mtv.separating`. The vector points from shape1 toward shape2.
+---@param shape1 strike.Shape @param shape2 strike.Shape @param out strike.MTV|nil
+---@return strike.MTV
+function S.AT(shape1, shape2, out)
+  local row = type(shape1) == 'table' and dispatch[shape1.kind]
+  local test = row and type(shape2) == 'table' and row[shape2.kind]
+  if not test then
+    if not row then badShape('strike.AT', 1, shape1) end
+    badShape('strike.AT', 2, shape2)
+  end
+  if out == nil then out = MTV() elseif type(out) ~= 'table' then checkOut('strike.AT', out, 3) end
+  return test(shape1, shape2, out)
+end
+
+-- Scratch state for S.triking: two MTVs swapped as the best one changes, and one-slot
+-- leaf lists for bare shapes.
+local tmpA, tmpB = MTV(), MTV()
+local single1, single2 = {}, {}
+
+local function leavesOf(v, slot, fname, i)
+  if type(v) == 'table' then
+    if v.type == 'collider' then
+      if not v._clean then v._refresh(v) end
+      return v._leaves, v._nleaves
+    elseif dispatch[v.kind] then
+      slot[1] = v
+      return slot, 1
+    end
+  end
+  fail(('%s: argument %d must be a strike collider or shape, got %s'):format(fname, i, describe(v)))
+end
+
+local root = require(ROOT .. '.collide.sat').root
+
+--- Collision between two colliders (or shapes): the deepest MTV over all pairs of their
+--- leaf shapes, or false when no pair collides. Members of one collider never collide
+--- with each other. The vector points from collider1 toward collider2.
+---@param collider1 strike.Collider|strike.Shape @param collider2 strike.Collider|strike.Shape
+---@param out strike.MTV|nil filled and returned on a collision
+---@return strike.MTV|false
+function S.triking(collider1, collider2, out)
+  local l1, n1 = leavesOf(collider1, single1, 'strike.triking', 1)
+  local l2, n2 = leavesOf(collider2, single2, 'strike.triking', 2)
+  checkOut('strike.triking', out, 3)
+  local best, tmp, found = tmpA, tmpB, false
+  local bestDepth = 0
+  for i = 1, n1 do
+    local a = l1[i]
+    local ra = root(a)
+    local ax0, ay0, ax1, ay1 = a:getBounds()
+    local row = dispatch[a.kind]
+    for j = 1, n2 do
+      local b = l2[j]
+      if root(b) ~= ra then
+        local bx0, by0, bx1, by1 = b:getBounds()
+        if ax0 < bx1 and bx0 < ax1 and ay0 < by1 and by0 < ay1 then
+          row[b.kind](a, b, tmp)
+          if not tmp.separating and tmp.depth > bestDepth then
+            best, tmp, found, bestDepth = tmp, best, true, tmp.depth
+          end
+        end
+      end
+    end
+  end
+  single1[1], single2[1] = nil, nil
+  if not found then return false end
+  out = out or MTV()
+  return MTV.set(out, best)
+end
+
+local function checkMTV(fname, mtv)
+  if type(mtv) ~= 'table' or type(mtv.x) ~= 'number' or type(mtv.y) ~= 'number' then
+    fail(('%s: argument 1 must be an MTV, got %s'):format(fname, describe(mtv)))
+  end
+end
+
+--- Resolve a collision by moving both sides half way: mtv.collider by -mtv / 2 and
+--- mtv.collided by +mtv / 2. Does nothing for a separating MTV.
+---@param mtv strike.MTV
+function S.ettle(mtv)
+  checkMTV('strike.ettle', mtv)
+  if mtv.separating then return end
+  local hx, hy = mtv.x / 2, mtv.y / 2
+  mtv.collider:translate(-hx, -hy)
+  mtv.collided:translate(hx, hy)
+end
+
+--- Resolve a collision by moving only mtv.collided, by the full +mtv (the collider side
+--- stays put: good against static geometry). Does nothing for a separating MTV.
+---@param mtv strike.MTV
+function S.hove(mtv)
+  checkMTV('strike.hove', mtv)
+  if mtv.separating then return end
+  mtv.collided:translate(mtv.x, mtv.y)
+end
+
+local function checkBody(fname, v, i)
+  if type(v) ~= 'table' or (v.type ~= 'collider' and not dispatch[v.kind]) then
+    fail(('%s: argument %d must be a strike collider or shape, got %s'):format(fname, i, describe(v)))
+  end
+end
+
+--- Bounding-circle test (centroid and radius) for colliders or shapes: true when the
+--- circles overlap (touching is not overlapping).
+---@param a strike.Collider|strike.Shape @param b strike.Collider|strike.Shape
+---@return boolean
+function S.ircle(a, b)
+  checkBody('strike.ircle', a, 1)
+  checkBody('strike.ircle', b, 2)
+  local ax, ay = a:getCentroid()
+  local bx, by = b:getCentroid()
+  local r = a:getRadius() + b:getRadius()
+  local dx, dy = bx - ax, by - ay
+  return dx * dx + dy * dy < r * r
+end
+
+--- Bounding-box test for colliders or shapes: true when the boxes overlap (touching is
+--- not overlapping).
+---@param a strike.Collider|strike.Shape @param b strike.Collider|strike.Shape
+---@return boolean
+function S.aabb(a, b)
+  checkBody('strike.aabb', a, 1)
+  checkBody('strike.aabb', b, 2)
+  local ax0, ay0, ax1, ay1 = a:getBounds()
+  local bx0, by0, bx1, by1 = b:getBounds()
+  return ax0 < bx1 and bx0 < ax1 and ay0 < by1 and by0 < ay1
+end
+
+return S

@@ -1,0 +1,161 @@
+--- A true circle.
+local ROOT = (...):match('^(.-)%.shapes%.[^%.]+$')
+local Shape = require(ROOT .. '.base.Shape')
+local check = require(ROOT .. '.check')
+
+local sqrt, pi = math.sqrt, math.pi
+local number, positive = check.number, check.positive
+
+---@class strike.Circle : strike.Shape
+local Circle = Shape:extend()
+Circle.kind = 'circle'
+Circle.name = 'Circle'
+
+--- A circle centred on (x, y) with radius r (> 0), turned by `angle` (default 0; the angle
+--- only matters to getAngle and to drawing).
+---@param x number @param y number @param r number @param angle number|nil
+function Circle:new(x, y, r, angle)
+  number(x, 'strike.Circle', 'x')
+  number(y, 'strike.Circle', 'y')
+  positive(r, 'strike.Circle', 'radius')
+  angle = check.optNumber(angle, 'strike.Circle', 'angle', 0)
+  if not check.finite(pi * r * r) then check.fail('strike.Circle: radius too large') end
+  self._r = r
+  self._area = pi * r * r
+  self._radius = r
+  self:_setPose(x, y)
+  if angle ~= 0 then self:rotate(angle) end
+end
+
+function Circle:_refresh()
+  local r = self._r * self._scale
+  local x, y = self._x, self._y
+  self._wr = r
+  self._minx, self._miny, self._maxx, self._maxy = x - r, y - r, x + r, y + r
+  self._dirty = false
+end
+
+--- The radius now (the constructor's radius times the scale).
+---@return number
+function Circle:getRadius() return self._r * self._scale end
+
+--- Minimum and maximum of the projection on the unit vector (nx, ny).
+---@param nx number @param ny number
+---@return number min, number max
+function Circle:project(nx, ny)
+  number(nx, 'strike.Shape:project', 'nx')
+  number(ny, 'strike.Shape:project', 'ny')
+  local d = self._x * nx + self._y * ny
+  local r = self._r * self._scale
+  return d - r, d + r
+end
+
+--- True when the point is strictly inside (not on the circle itself). Takes x, y or {x=, y=}.
+---@param x number|table @param y number|nil
+---@return boolean
+function Circle:containsPoint(x, y)
+  x, y = Shape._point(x, y, 'strike.Shape:containsPoint')
+  local dx, dy, r = x - self._x, y - self._y, self._r * self._scale
+  return dx * dx + dy * dy < r * r
+end
+
+--- A circle has no vertices: nil.
+---@return nil
+function Circle:getVertex() return nil end
+
+--- A circle has no edges: nil.
+---@return nil
+function Circle:getEdge() return nil end
+
+--- A circle has no vertices: count 0.
+---@return integer
+function Circle:getVertexCount() return 0 end
+
+--- A circle has no vertices: `out` (or a new table) emptied, and 0.
+---@param out table|nil
+---@return table, integer
+function Circle:getVertices(out)
+  out = out or {}
+  for i = #out, 1, -1 do out[i] = nil end
+  return out, 0
+end
+
+--- The point on the circle farthest along (nx, ny).
+---@param nx number @param ny number
+---@return number x, number y
+function Circle:getSupport(nx, ny)
+  local r = self._r * self._scale
+  return self._x + nx * r, self._y + ny * r
+end
+
+-- Direction from the circle's centre toward `other` (its nearest vertex, or its centre),
+-- unit length; (0, -1) when they coincide.
+local function axisToward(self, other)
+  local cx, cy = self._x, self._y
+  local tx, ty
+  if other and other._n then
+    if other._dirty then other:_refresh() end
+    local best = math.huge
+    local wx, wy = other._wx, other._wy
+    for i = 1, other._n do
+      local dx, dy = wx[i] - cx, wy[i] - cy
+      local d = dx * dx + dy * dy
+      if d < best then best, tx, ty = d, wx[i], wy[i] end
+    end
+  elseif other and other._x then
+    tx, ty = other._x, other._y
+  end
+  if not tx then return 0, -1 end
+  local dx, dy = tx - cx, ty - cy
+  local l = sqrt(dx * dx + dy * dy)
+  if l == 0 then return 0, -1 end
+  return dx / l, dy / l
+end
+
+local function circleEdgeIter(state, i)
+  if i >= 1 then return nil end
+  local self, other = state[1], state[2]
+  local ax, ay = axisToward(self, other)
+  local r = self._r * self._scale
+  local px, py = self._x + ax * r, self._y + ay * r
+  -- the tangent at the point facing `other`, in positive winding
+  return 1, px + ay * r, py - ax * r, px - ay * r, py + ax * r
+end
+
+--- Iterate over the circle's one pseudo-edge: the tangent segment (length 2r) at the point
+--- facing `other` (its nearest vertex or its centre). Without `other`, the point at -y.
+--- `for i, x1, y1, x2, y2 in circle:ipairs(other) do`.
+---@param other strike.Shape|nil
+---@return function, table, integer
+function Circle:ipairs(other)
+  return circleEdgeIter, { self, other }, 0
+end
+
+local function circleVecIter(state, i)
+  if i >= 1 then return nil end
+  local ax, ay = axisToward(state[1], state[2])
+  return 1, -ay, ax
+end
+
+--- Iterate over the one vector whose normal is the circle's SAT axis toward `other`:
+--- `for i, dx, dy in circle:vecs(other) do`.
+---@param other strike.Shape|nil
+---@return function, table, integer
+function Circle:vecs(other)
+  return circleVecIter, { self, other }, 0
+end
+
+--- Largest distance from (px, py) to the circle.
+---@return number
+function Circle:_farthest(px, py)
+  local dx, dy = self._x - px, self._y - py
+  return sqrt(dx * dx + dy * dy) + self._r * self._scale
+end
+
+--- Arguments that rebuild the circle as it is now: x, y, radius, angle.
+---@return number, number, number, number
+function Circle:unpack()
+  return self._x, self._y, self._r * self._scale, self._angle
+end
+
+return Circle

@@ -1,0 +1,45 @@
+--- An ellipse, approximated by an inscribed polygon.
+local ROOT = (...):match('^(.-)%.shapes%.[^%.]+$')
+local ConvexPolygon = require(ROOT .. '.shapes.ConvexPolygon')
+local check = require(ROOT .. '.check')
+
+local sin, cos, pi, floor, max, min = math.sin, math.cos, math.pi, math.floor, math.max, math.min
+
+---@class strike.Ellipse : strike.ConvexPolygon
+local Ellipse = ConvexPolygon:extend()
+Ellipse.name = 'Ellipse'
+
+--- An ellipse centred on (x, y) with semi-axes a (along x) and b (along y), approximated by
+--- an inscribed polygon of n segments (3 <= n <= 4096; default max(8, 4 * floor(a / b)),
+--- at most 64), turned by `angle`.
+---@param x number @param y number @param a number @param b number @param n integer|nil @param angle number|nil
+function Ellipse:new(x, y, a, b, n, angle)
+  check.number(x, 'strike.Ellipse', 'x')
+  check.number(y, 'strike.Ellipse', 'y')
+  check.positive(a, 'strike.Ellipse', 'semi-axis a')
+  check.positive(b, 'strike.Ellipse', 'semi-axis b')
+  if n == nil then
+    n = min(64, max(8, 4 * floor(a / b)))
+  else
+    check.integer(n, 'strike.Ellipse', 'segment count', 3, 4096)
+  end
+  angle = check.optNumber(angle, 'strike.Ellipse', 'angle', 0)
+  local pts = {}
+  for k = 1, n do
+    local t = 2 * pi * (k - 1) / n
+    pts[2 * k - 1], pts[2 * k] = x + a * cos(t), y + b * sin(t)
+  end
+  self.a, self.b, self.n = a, b, n
+  Ellipse.super.new(self, pts)
+  self._x, self._y = x, y
+  if angle ~= 0 then self:rotate(angle) end
+end
+
+--- Arguments that rebuild it as it is now: x, y, a, b, n, angle.
+---@return number, number, number, number, integer, number
+function Ellipse:unpack()
+  local s = self._scale
+  return self._x, self._y, self.a * s, self.b * s, self.n, self._angle
+end
+
+return Ellipse

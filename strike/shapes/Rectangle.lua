@@ -1,0 +1,34 @@
+--- A rectangle centred on a point, rotatable.
+local ROOT = (...):match('^(.-)%.shapes%.[^%.]+$')
+local ConvexPolygon = require(ROOT .. '.shapes.ConvexPolygon')
+local check = require(ROOT .. '.check')
+
+---@class strike.Rectangle : strike.ConvexPolygon
+local Rectangle = ConvexPolygon:extend()
+Rectangle.name = 'Rectangle'
+
+--- A dx-by-dy rectangle (dy defaults to dx) centred on (x, y), turned by `angle` radians.
+--- Unrotated, edge 1 is the min-y side (normal (0, -1)), then +x, max-y and -x.
+---@param x number @param y number @param dx number @param dy number|nil @param angle number|nil
+function Rectangle:new(x, y, dx, dy, angle)
+  check.number(x, 'strike.Rectangle', 'x')
+  check.number(y, 'strike.Rectangle', 'y')
+  check.positive(dx, 'strike.Rectangle', 'width')
+  if dy == nil then dy = dx end
+  check.positive(dy, 'strike.Rectangle', 'height')
+  angle = check.optNumber(angle, 'strike.Rectangle', 'angle', 0)
+  local hx, hy = dx / 2, dy / 2
+  self.dx, self.dy = dx, dy
+  Rectangle.super.new(self, x - hx, y - hy, x + hx, y - hy, x + hx, y + hy, x - hx, y + hy)
+  self._x, self._y = x, y -- the exact centre, free of round-off
+  if angle ~= 0 then self:rotate(angle) end
+end
+
+--- Arguments that rebuild the rectangle as it is now: x, y, width, height, angle.
+---@return number, number, number, number, number
+function Rectangle:unpack()
+  local s = self._scale
+  return self._x, self._y, self.dx * s, self.dy * s, self._angle
+end
+
+return Rectangle

@@ -1,0 +1,39 @@
+--- A regular polygon inscribed in a circle.
+local ROOT = (...):match('^(.-)%.shapes%.[^%.]+$')
+local ConvexPolygon = require(ROOT .. '.shapes.ConvexPolygon')
+local check = require(ROOT .. '.check')
+
+local sin, cos, pi = math.sin, math.cos, math.pi
+
+---@class strike.RegularPolygon : strike.ConvexPolygon
+local RegularPolygon = ConvexPolygon:extend()
+RegularPolygon.name = 'RegularPolygon'
+
+--- An n-sided regular polygon (3 <= n <= 4096) centred on (x, y) with circumradius
+--- `radius`, turned by `angle`. Unrotated, vertex n sits at (x, y + radius), as in the
+--- original Strike (so n = 4 gives a diamond).
+---@param x number @param y number @param n integer @param radius number @param angle number|nil
+function RegularPolygon:new(x, y, n, radius, angle)
+  check.number(x, 'strike.RegularPolygon', 'x')
+  check.number(y, 'strike.RegularPolygon', 'y')
+  check.integer(n, 'strike.RegularPolygon', 'side count', 3, 4096)
+  check.positive(radius, 'strike.RegularPolygon', 'radius')
+  angle = check.optNumber(angle, 'strike.RegularPolygon', 'angle', 0)
+  local pts = {}
+  for i = 1, n do
+    local a = -2 * pi * i / n
+    pts[2 * i - 1], pts[2 * i] = x + radius * sin(a), y + radius * cos(a)
+  end
+  self.n, self.radius = n, radius
+  RegularPolygon.super.new(self, pts)
+  self._x, self._y = x, y
+  if angle ~= 0 then self:rotate(angle) end
+end
+
+--- Arguments that rebuild it as it is now: x, y, n, radius, angle.
+---@return number, number, integer, number, number
+function RegularPolygon:unpack()
+  return self._x, self._y, self.n, self.radius * self._scale, self._angle
+end
+
+return RegularPolygon
