@@ -5,6 +5,9 @@ local check = require(ROOT .. '.check')
 local hull = require(ROOT .. '.geometry.hull')
 local vec = require(ROOT .. '.vec')
 local unpack = require(ROOT .. '.compat').unpack
+local maxSeparation = require(ROOT .. '.collide.sat').maxSeparation
+
+local abs, max = math.abs, math.max
 
 local finite, describe, fail = check.finite, check.describe, check.fail
 
@@ -41,6 +44,18 @@ function ConvexPolygon:new(...)
     end
     xs[i], ys[i] = x, y
   end
+  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
+  for i = 1, n do
+    local x, y = xs[i], ys[i]
+    if x < x0 then x0 = x end
+    if x > x1 then x1 = x end
+    if y < y0 then y0 = y end
+    if y > y1 then y1 = y end
+  end
+  local d2 = (x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0)
+  if n > 0 and not finite(d2 * d2) then -- the hull's turn test multiplies squared lengths
+    fail(('%s: coordinates too large (their extent overflows)'):format(fname))
+  end
   local hx, hy, h, distinct = hull.build(xs, ys, n)
   if h < 3 then
     fail(('%s: needs at least 3 distinct non-collinear points, got %d distinct point%s%s'):format(
@@ -58,6 +73,34 @@ function ConvexPolygon:new(...)
     fail(('%s: coordinates too large or too close together (area %s)'):format(fname, describe(area)))
   end
   self:_setVertices(hx, hy, h, cx, cy, area)
+end
+
+--- The union of this polygon and `other` as a new ConvexPolygon when that union is convex
+--- (the two touch without overlapping and fill their common hull), else false.
+--- Test: interiors disjoint (some face separates them, within a relative 1e-9) and
+--- area(hull of both) = area(self) + area(other) (relative 1e-9).
+---@param other strike.Shape
+---@return strike.ConvexPolygon|false
+function ConvexPolygon:merge(other)
+  if type(other) ~= 'table' or other.kind ~= 'polygon' or not other._n or other._n < 3 then return false end
+  if self._dirty then self:_refresh() end
+  if other._dirty then other:_refresh() end
+  local tol = 1e-9 * max(self:getRadius(), other:getRadius())
+  if max(maxSeparation(self, other), maxSeparation(other, self)) < -tol then return false end
+  local xs, ys, n = {}, {}, 0
+  for _, s in ipairs({ self, other }) do
+    for i = 1, s._n do
+      n = n + 1
+      xs[n], ys[n] = s._wx[i], s._wy[i]
+    end
+  end
+  local hx, hy, h = hull.build(xs, ys, n)
+  local area = vec.polygonAreaCentroid(hx, hy, h)
+  local sum = self:getArea() + other:getArea()
+  if abs(area - sum) > 1e-9 * sum then return false end
+  local pts = {}
+  for i = 1, h do pts[2 * i - 1], pts[2 * i] = hx[i], hy[i] end
+  return ConvexPolygon(pts)
 end
 
 --- Arguments that rebuild the polygon as it is now: its world vertices x1, y1, x2, y2, ...
