@@ -46,12 +46,12 @@ function check.describe(v)
   return t
 end
 
---- True for a number that is neither NaN nor infinite.
 ---@param v any
 ---@return boolean
 local function finite(v)
   return type(v) == 'number' and v - v == 0
 end
+--- True for a number that is neither NaN nor infinite.
 check.finite = finite
 
 --- Require a finite number.

@@ -25,6 +25,7 @@ local S = {
 }
 
 S.hapes, S.trikers = registry.new()
+--- The MTV class, so a game can make its own `out` objects: S.MTV(dx, dy, ...).
 S.MTV = MTV
 
 -- Built-in classes, registered eagerly so that pairs(S.hapes) lists them.

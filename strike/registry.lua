@@ -3,7 +3,8 @@
 --- `<root>.colliders.<Name>`), so a file dropped into strike/shapes/ or strike/colliders/
 --- registers itself; assigning `S.hapes.Name = Class` registers a class from anywhere.
 --- Nothing lists directories. Every shape name also gets a single-shape collider class
---- in S.trikers.
+--- in S.trikers. A name registers once through assignment (later assignments to the same
+--- name replace the class without checks, as for any table field).
 local ROOT = (...):match('^(.-)%.[^%.]+$')
 local Object = require(ROOT .. '.class')
 local Shape = require(ROOT .. '.base.Shape')
@@ -62,8 +63,6 @@ function registry.new()
       end
       nameClass(cls, name)
       missingShape[name], missingCollider[name] = nil, nil
-      local wrapper = rawget(colliders, name)
-      if wrapper and wrapper.shapeClass then rawset(colliders, name, nil) end
       rawset(t, name, cls)
     end,
   })
@@ -79,9 +78,8 @@ function registry.new()
         end
         nameClass(cls, name)
       else
-        local shapeClass = shapes[name]
-        if not shapeClass then missingCollider[name] = true return nil end
-        cls = single(shapeClass, name)
+        if not shapes[name] then missingCollider[name] = true return nil end
+        cls = single(shapes, name)
       end
       rawset(t, name, cls)
       return cls

@@ -22,6 +22,7 @@ local function root(s)
   while p do s, p = p, p.parent end
   return s
 end
+--- root(shape): the outermost collider holding the shape, or the shape itself.
 sat.root = root
 
 -- Fill `out`. (nx, ny) is the unit normal from a to b, depth > 0 means overlap.
@@ -34,11 +35,11 @@ local function result(out, a, b, nx, ny, depth, edge)
   out.collider, out.collided = root(a), root(b)
   return out
 end
+--- result(out, a, b, nx, ny, depth, edge): fill an MTV-shaped table and return it.
 sat.result = result
 
---- Largest, over A's faces, of the smallest signed distance of B's vertices in front of
---- the face; stops early at the first face with nothing of B behind it (>= 0).
----@return number separation, integer face
+-- Largest, over A's faces, of the smallest signed distance of B's vertices in front of
+-- the face; stops early at the first face with nothing of B behind it (>= 0).
 local function maxSeparation(A, B)
   local ax, ay, anx, any = A._wx, A._wy, A._wnx, A._wny
   local bx, by, nb = B._wx, B._wy, B._n
@@ -57,6 +58,9 @@ local function maxSeparation(A, B)
   end
   return best, bi
 end
+--- maxSeparation(A, B): over A's faces, the largest of the smallest signed distance of B's
+--- vertices in front of the face (>= 0: that face separates them), and that face's index.
+---@type fun(A: strike.VertexShape, B: strike.VertexShape): number, integer
 sat.maxSeparation = maxSeparation
 
 --- Polygon (or edge) A against polygon (or edge) B.
@@ -106,7 +110,12 @@ local function polygonCircle(P, C, out, flip)
   return result(out, P, C, nx, ny, depth, edge)
 end
 
+--- Polygon (or edge) P against circle C.
+---@return table out
 function sat.polygonCircle(P, C, out) return polygonCircle(P, C, out, false) end
+
+--- Circle C against polygon (or edge) P.
+---@return table out
 function sat.circlePolygon(C, P, out) return polygonCircle(P, C, out, true) end
 
 --- Circle against circle. Concentric circles get the normal (0, -1).

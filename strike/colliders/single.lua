@@ -1,16 +1,19 @@
 --- Single-shape colliders: S.trikers.<ShapeName>(...) is a Collider class holding exactly
---- one S.hapes.<ShapeName>(...) built from the same arguments.
+--- one S.hapes.<ShapeName>(...) built from the same arguments. The shape class is looked up
+--- in the registry at construction, so re-registering a shape name is followed.
 local ROOT = (...):match('^(.-)%.colliders%.[^%.]+$')
 local Collider = require(ROOT .. '.colliders.Collider')
+local check = require(ROOT .. '.check')
 
---- Make the single-shape collider class for a shape class.
----@param ShapeClass table @param name string
+--- Make the single-shape collider class for the shape registered as `name`.
+---@param shapes table the S.hapes registry @param name string
 ---@return table
-return function(ShapeClass, name)
+return function(shapes, name)
   local Single = Collider:extend()
   Single.name = name
-  Single.shapeClass = ShapeClass
   function Single:new(...)
+    local ShapeClass = shapes[name]
+    if not ShapeClass then check.fail(('strike.trikers.%s: S.hapes.%s is no longer registered'):format(name, name)) end
     Collider.new(self, ShapeClass(...))
     self._angle = self.shapes[1]._angle
   end

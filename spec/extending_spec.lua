@@ -1,0 +1,156 @@
+-- The README's walkthroughs, as a game would write them.
+local S = require('strike')
+local expect = require('spec.helpers.expect')
+local near, nearList, raisesAt = expect.near, expect.nearList, expect.raisesAt
+local pi = math.pi
+
+describe('a user-defined shape', function()
+  -- The Rectangle walkthrough, line for line (with `x, y` spelled as the nils they are).
+  local Rect = S.hapes.ConvexPolygon:extend()
+  function Rect:new(x, y, dx, dy, angle)
+    assert(dx, 'Rectangle constructor missing width/height')
+    dy = dy or dx
+    self.dx, self.dy = dx, dy
+    self.angle = angle or 0
+    local hx, hy = dx / 2, dy / 2
+    Rect.super.new(self,
+      x - hx, y - hy,
+      x + hx, y - hy,
+      x + hx, y + hy,
+      x - hx, y + hy
+    )
+    self:rotate(self.angle)
+  end
+  function Rect:unpack()
+    local cx, cy = self:getCentroid(nil, nil)
+    return cx, cy, self.dx, self.dy, self.angle
+  end
+
+  -- A trapezoid, the README's other example.
+  local Trapezoid = S.hapes.ConvexPolygon:extend()
+  function Trapezoid:new(x, y, top, bottom, height)
+    self.top, self.bottom, self.height = top, bottom, height
+    local h = height / 2
+    Trapezoid.super.new(self, x - bottom / 2, y + h, x + bottom / 2, y + h, x + top / 2, y - h, x - top / 2, y - h)
+  end
+  function Trapezoid:unpack()
+    local cx, cy = self:getCentroid()
+    return cx, cy, self.top, self.bottom, self.height
+  end
+
+  it('works with the walkthrough as written', function()
+    local r = Rect(0, 0, 4, 2, pi / 2)
+    nearList({ r:getBbox() }, { -1, -2, 2, 4 })
+    near(r:getAngle(), pi / 2) -- the walkthrough's self.angle does not double the rotation
+    assert.equals(8, r:getArea())
+    nearList({ r:unpack() }, { 0, 0, 4, 2, pi / 2 })
+  end)
+
+  it('registers by assignment, which also makes the single-shape collider', function()
+    S.hapes.Trapezoid = Trapezoid
+    assert.equals(Trapezoid, S.hapes.Trapezoid)
+    assert.equals('Trapezoid', Trapezoid.name)
+    local c = S.trikers.Trapezoid(0, 0, 2, 6, 2)
+    assert.is_true(c:is(S.trikers.Collider))
+    assert.equals(Trapezoid, getmetatable(c.shapes[1]))
+    near(c:getArea(), 8)
+    assert.truthy(S.triking(c, S.trikers.Circle(0, 0, 1)))
+  end)
+
+  it('copies, keeping its class and pose', function()
+    local t = Trapezoid(0, 0, 2, 6, 2):rotate(0.5):scale(2)
+    local k = t:copy()
+    assert.equals(Trapezoid, getmetatable(k))
+    nearList((k:getVertices()), (t:getVertices()))
+    local moved = t:copy(10, 10, 0)
+    nearList({ moved:getCentroid() }, { 10, 10 })
+    near(moved:getAngle(), 0)
+    assert.equals(6, S.trikers.Collider(t):copy().shapes[1].bottom)
+  end)
+
+  it('re-registering a name replaces its single-shape collider', function()
+    local Other = S.hapes.ConvexPolygon:extend()
+    function Other:new(x, y) Other.super.new(self, x, y, x + 1, y, x, y + 1) end
+    S.hapes.Wedge = Trapezoid
+    local _ = S.trikers.Wedge(0, 0, 2, 6, 2)
+    S.hapes.Wedge = Other
+    assert.equals(Other, getmetatable(S.trikers.Wedge(0, 0).shapes[1]))
+  end)
+
+  it('registering something that is not a shape class is an error', function()
+    raisesAt(function() S.hapes.Bad = {} end, 'S.hapes.Bad must be a class extending a strike shape')
+    raisesAt(function() S.hapes.Bad = S.hapes.Circle(0, 0, 1) end, 'got table')
+    raisesAt(function() S.hapes[1] = Trapezoid end, 'S.hapes names must be identifiers, got 1')
+    raisesAt(function() S.trikers.Bad = Trapezoid end, 'S.trikers.Bad must be a class extending S.trikers.Collider')
+  end)
+end)
+
+describe('a shape file dropped into strike/shapes/', function()
+  local path = 'strike/shapes/SpecDroppedKite.lua'
+  local source = [[
+local ConvexPolygon = require((...):match('^(.-)[^%.]+$') .. 'ConvexPolygon')
+local Kite = ConvexPolygon:extend()
+function Kite:new(x, y, w, h)
+  self.w, self.h = w, h
+  Kite.super.new(self, x, y - h / 4, x + w / 2, y, x, y + 3 * h / 4, x - w / 2, y)
+end
+function Kite:unpack()
+  local x, y = self:getCentroid()
+  return x, y, self.w, self.h
+end
+return Kite
+]]
+
+  it('is found by name, as a shape and as a single-shape collider', function()
+    local f = assert(io.open(path, 'w'))
+    f:write(source)
+    f:close()
+    finally(function() os.remove(path) end)
+    local Kite = S.hapes.SpecDroppedKite
+    assert.is_table(Kite)
+    assert.equals('SpecDroppedKite', Kite.name)
+    near(Kite(0, 0, 2, 4):getArea(), 4)
+    local c = S.trikers.SpecDroppedKite(0, 0, 2, 4)
+    assert.equals(Kite, getmetatable(c.shapes[1]))
+  end)
+end)
+
+describe('a user-defined collider', function()
+  -- The Capsule walkthrough, line for line.
+  local Circle, Rectangle = S.hapes.Circle, S.hapes.Rectangle
+  local Pill = S.trikers.Collider:extend()
+  function Pill:new(x, y, dx, dy, angle_rads)
+    self.shapes = {}
+    self.centroid = { x = 0, y = 0 }
+    self.radius = 0
+    self.angle = angle_rads or 0
+    local hx, hy = dx / 2, dy / 2
+    self:add(
+      Circle(x, y - hy, hx),
+      Circle(x, y + hy, hx),
+      Rectangle(x, y, dx, dy)
+    )
+    self:calcAreaCentroid()
+    self:calcRadius()
+    self:rotate(self.angle)
+  end
+
+  it('works with the walkthrough as written', function()
+    local p = Pill(0, 0, 10, 20, pi / 2)
+    nearList({ p:getBbox() }, { -15, -5, 30, 10 })
+    near(p:getAngle(), pi / 2)
+    p:rotateTo(0)
+    nearList({ p:getBbox() }, { -5, -15, 10, 30 })
+    nearList({ p:getCentroid() }, { 0, 0 })
+    near(p:getRadius(), 15)
+  end)
+
+  it('registers by assignment and copies as its own class', function()
+    S.trikers.Pill = Pill
+    assert.equals(Pill, S.trikers.Pill)
+    local p = S.trikers.Pill(0, 0, 10, 20):copy(5, 5)
+    assert.is_true(p:is(Pill))
+    nearList({ p:getCentroid() }, { 5, 5 })
+    assert.truthy(S.triking(p, S.trikers.Circle(5, 5, 1)))
+  end)
+end)
