@@ -269,3 +269,39 @@ describe('Concave', function()
     raisesAt(function() T.Concave(0, 0, 1) end, 'odd number of values (3)')
   end)
 end)
+
+describe('collider errors', function()
+  it('containsPoint validates the point', function()
+    raisesAt(function() T.Collider():containsPoint(nil, 1) end,
+      'strike.Collider:containsPoint: point x must be a finite number, got nil')
+  end)
+
+  it('a single-shape collider whose shape was unregistered says so', function()
+    local Tri = H.ConvexPolygon:extend()
+    function Tri:new() Tri.super.new(self, 0, 0, 1, 0, 0, 1) end
+    H.SpecGoneTri = Tri
+    assert.is_table(T.SpecGoneTri())
+    H.SpecGoneTri = nil
+    raisesAt(function() T.SpecGoneTri() end, 'strike.trikers.SpecGoneTri: S.hapes.SpecGoneTri is no longer registered')
+  end)
+
+  it('a file that returns something other than a class is an error at the line that named it', function()
+    package.preload['strike.shapes.SpecWeird'] = function() return 42 end
+    package.preload['strike.colliders.SpecWeirder'] = function() return H.Circle end
+    finally(function()
+      package.preload['strike.shapes.SpecWeird'], package.preload['strike.colliders.SpecWeirder'] = nil, nil
+      package.loaded['strike.shapes.SpecWeird'], package.loaded['strike.colliders.SpecWeirder'] = nil, nil
+    end)
+    raisesAt(function() local _ = H.SpecWeird end,
+      'strike: shapes/SpecWeird.lua must return a class extending a strike shape')
+    raisesAt(function() local _ = T.SpecWeirder end, 'strike: colliders/SpecWeirder.lua must return a class extending')
+  end)
+
+  it('a file that fails to load reports its own error', function()
+    package.preload['strike.shapes.SpecBroken'] = function() error('boom in the file') end
+    finally(function() package.preload['strike.shapes.SpecBroken'] = nil end)
+    local ok, err = pcall(function() return H.SpecBroken end)
+    assert.is_false(ok)
+    assert.matches('boom in the file', err)
+  end)
+end)

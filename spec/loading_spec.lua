@@ -42,7 +42,8 @@ describe('require', function()
     for k in pairs(_G) do before[k] = true end
     local S = require('strike')
     local shape = S.hapes.Rectangle(0, 0, 1)
-    local _ = S.hapes.NotAShape, S.trikers.NotACollider
+    assert.is_nil(S.hapes.NotAShape)
+    assert.is_nil(S.trikers.NotACollider)
     assert.is_table(S.AT(shape, shape))
     for k in pairs(_G) do assert(before[k], 'strike defined the global ' .. tostring(k)) end
     for k in pairs(before) do assert(rawget(_G, k) ~= nil, 'strike removed the global ' .. tostring(k)) end
