@@ -6,8 +6,9 @@ local ROOT = (...):match('^(.-)%.base%.[^%.]+$')
 local Object = require(ROOT .. '.class')
 local check = require(ROOT .. '.check')
 
-local cos, sin = math.cos, math.sin
-local number, positive, optPoint = check.number, check.positive, check.optPoint
+local cos, sin, abs = math.cos, math.sin, math.abs
+local number, positive, optPoint, finite, fail = check.number, check.positive, check.optPoint, check.finite,
+  check.fail
 
 ---@class strike.Shape : strike.Object
 ---@field parent strike.Collider|nil the collider holding this shape, if any
@@ -25,6 +26,16 @@ function Shape:_setPose(x, y)
   self._x, self._y = x, y
   self._angle, self._cos, self._sin, self._scale = 0, 1, 0, 1
   self._dirty = true
+end
+
+-- Commit a new pose if every world coordinate it implies stays finite; otherwise raise an
+-- error and leave the shape as it was.
+local function setPose(self, x, y, scale, fname)
+  if not finite(abs(x) + abs(y) + self._radius * scale) then
+    fail(fname .. ': the result would overflow (coordinates too large)')
+  end
+  if scale <= 0 then fail(fname .. ': the scale would underflow to 0') end
+  self._x, self._y, self._scale = x, y, scale
 end
 
 --- Mark this shape's world-space cache, and every enclosing collider's aggregates, as
@@ -47,7 +58,7 @@ function Shape:_refresh() self._dirty = false end
 function Shape:translate(dx, dy)
   number(dx, 'strike.Shape:translate', 'dx')
   number(dy, 'strike.Shape:translate', 'dy')
-  self._x, self._y = self._x + dx, self._y + dy
+  setPose(self, self._x + dx, self._y + dy, self._scale, 'strike.Shape:translate')
   self:_touch()
   return self
 end
@@ -58,20 +69,20 @@ end
 function Shape:translateTo(x, y)
   number(x, 'strike.Shape:translateTo', 'x')
   number(y, 'strike.Shape:translateTo', 'y')
-  self._x, self._y = x, y
+  setPose(self, x, y, self._scale, 'strike.Shape:translateTo')
   self:_touch()
   return self
 end
 
 -- Rotate the pose by `a` about (rx, ry) (the centroid when nil). Arguments are valid.
-local function rotateBy(self, a, rx, ry)
-  local angle = self._angle + a
-  self._angle, self._cos, self._sin = angle, cos(angle), sin(angle)
+local function rotateBy(self, a, rx, ry, fname)
   if rx then
     local c, s = cos(a), sin(a)
     local dx, dy = self._x - rx, self._y - ry
-    self._x, self._y = rx + c * dx - s * dy, ry + s * dx + c * dy
+    setPose(self, rx + c * dx - s * dy, ry + s * dx + c * dy, self._scale, fname)
   end
+  local angle = self._angle + a
+  self._angle, self._cos, self._sin = angle, cos(angle), sin(angle)
   self:_touch()
   return self
 end
@@ -83,7 +94,7 @@ end
 function Shape:rotate(angle, refx, refy)
   number(angle, 'strike.Shape:rotate', 'angle')
   refx, refy = optPoint(refx, refy, 'strike.Shape:rotate')
-  return rotateBy(self, angle, refx, refy)
+  return rotateBy(self, angle, refx, refy, 'strike.Shape:rotate')
 end
 
 --- Rotate to the absolute `angle` about (refx, refy), by default the centroid: the same
@@ -93,7 +104,7 @@ end
 function Shape:rotateTo(angle, refx, refy)
   number(angle, 'strike.Shape:rotateTo', 'angle')
   refx, refy = optPoint(refx, refy, 'strike.Shape:rotateTo')
-  return rotateBy(self, angle - self._angle, refx, refy)
+  return rotateBy(self, angle - self._angle, refx, refy, 'strike.Shape:rotateTo')
 end
 
 --- Scale by factor `sf` (> 0) about (refx, refy), by default the centroid. Calls compose:
@@ -103,10 +114,9 @@ end
 function Shape:scale(sf, refx, refy)
   positive(sf, 'strike.Shape:scale', 'factor')
   refx, refy = optPoint(refx, refy, 'strike.Shape:scale')
-  self._scale = self._scale * sf
-  if refx then
-    self._x, self._y = refx + (self._x - refx) * sf, refy + (self._y - refy) * sf
-  end
+  local x, y = self._x, self._y
+  if refx then x, y = refx + (x - refx) * sf, refy + (y - refy) * sf end
+  setPose(self, x, y, self._scale * sf, 'strike.Shape:scale')
   self:_touch()
   return self
 end

@@ -90,8 +90,9 @@ local function polygonCircle(P, C, out, flip)
     end
   end
   local nx, ny, depth, edge = wnx[bi], wny[bi], r - best, bi
-  if best > 0 and best < r then
-    -- the centre is outside face bi: the closest feature is the face or one of its ends
+  if (best > 0 or n == 2) and best < r then
+    -- the centre is outside face bi (or, for an edge, anywhere on its line): the closest
+    -- feature is the face or one of its ends
     local j = bi < n and bi + 1 or 1
     local x1, y1, x2, y2 = wx[bi], wy[bi], wx[j], wy[j]
     local vx, vy
@@ -103,7 +104,9 @@ local function polygonCircle(P, C, out, flip)
     if vx then
       local dx, dy = cx - vx, cy - vy
       local d = sqrt(dx * dx + dy * dy)
-      nx, ny, depth, edge = dx / d, dy / d, r - d, 0
+      if d > 0 then -- (a centre exactly on the vertex keeps the face normal, depth r)
+        nx, ny, depth, edge = dx / d, dy / d, r - d, 0
+      end
     end
   end
   if flip then return result(out, C, P, -nx, -ny, depth, -edge) end

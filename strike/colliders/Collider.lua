@@ -11,7 +11,7 @@ local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
 local unpack = require(ROOT .. '.compat').unpack
 
-local cos, sin, huge = math.cos, math.sin, math.huge
+local cos, sin, huge, abs = math.cos, math.sin, math.huge, math.abs
 local number, positive, optPoint, fail, describe = check.number, check.positive, check.optPoint, check.fail,
   check.describe
 
@@ -309,31 +309,41 @@ function Collider:containsPoint(x, y)
   return false
 end
 
--- Apply fn(leaf, ...) to every leaf and fix the collider bookkeeping.
-local function eachLeaf(self, fn, a, b, c)
-  if not self._clean then refresh(self) end
-  local leaves = self._leaves
-  for i = 1, self._nleaves do fn(leaves[i], a, b, c) end
-end
+-- Leaf poses after a transform: `pose(leaf, a, b, c)` returns the new x, y and scale.
+local function moved(s, dx, dy) return s._x + dx, s._y + dy, s._scale end
 
-local function moveLeaf(s, dx, dy)
-  s._x, s._y = s._x + dx, s._y + dy
-  s:_touch()
-end
-
-local function rotateLeaf(s, a, rx, ry)
-  local angle = s._angle + a
-  s._angle, s._cos, s._sin = angle, cos(angle), sin(angle)
+local function rotated(s, a, rx, ry)
   local c, sn = cos(a), sin(a)
   local dx, dy = s._x - rx, s._y - ry
-  s._x, s._y = rx + c * dx - sn * dy, ry + sn * dx + c * dy
-  s:_touch()
+  return rx + c * dx - sn * dy, ry + sn * dx + c * dy, s._scale
 end
 
-local function scaleLeaf(s, sf, rx, ry)
-  s._scale = s._scale * sf
-  s._x, s._y = rx + (s._x - rx) * sf, ry + (s._y - ry) * sf
-  s:_touch()
+local function scaled(s, sf, rx, ry)
+  return rx + (s._x - rx) * sf, ry + (s._y - ry) * sf, s._scale * sf
+end
+
+-- Give every leaf its new pose (and turn it by `turn`), or, when some leaf would overflow,
+-- raise an error at the caller's line before anything moves.
+local function eachLeaf(self, fname, pose, a, b, c, turn)
+  if not self._clean then refresh(self) end
+  local leaves, n = self._leaves, self._nleaves
+  for i = 1, n do
+    local s = leaves[i]
+    local x, y, k = pose(s, a, b, c)
+    if not check.finite(abs(x) + abs(y) + s._radius * k) then
+      fail(fname .. ': the result would overflow (coordinates too large)')
+    end
+    if k <= 0 then fail(fname .. ': the scale would underflow to 0') end
+  end
+  for i = 1, n do
+    local s = leaves[i]
+    s._x, s._y, s._scale = pose(s, a, b, c)
+    if turn then
+      local angle = s._angle + turn
+      s._angle, s._cos, s._sin = angle, cos(angle), sin(angle)
+    end
+    s:_touch()
+  end
 end
 
 local function addAngle(self, a)
@@ -350,7 +360,7 @@ end
 function Collider:translate(dx, dy)
   number(dx, 'strike.Collider:translate', 'dx')
   number(dy, 'strike.Collider:translate', 'dy')
-  eachLeaf(self, moveLeaf, dx, dy)
+  eachLeaf(self, 'strike.Collider:translate', moved, dx, dy)
   return self
 end
 
@@ -361,7 +371,7 @@ function Collider:translateTo(x, y)
   number(x, 'strike.Collider:translateTo', 'x')
   number(y, 'strike.Collider:translateTo', 'y')
   local cx, cy = self:getCentroid()
-  eachLeaf(self, moveLeaf, x - cx, y - cy)
+  eachLeaf(self, 'strike.Collider:translateTo', moved, x - cx, y - cy)
   return self
 end
 
@@ -372,7 +382,7 @@ function Collider:rotate(angle, refx, refy)
   number(angle, 'strike.Collider:rotate', 'angle')
   refx, refy = optPoint(refx, refy, 'strike.Collider:rotate')
   if not refx then refx, refy = self:getCentroid() end
-  eachLeaf(self, rotateLeaf, angle, refx, refy)
+  eachLeaf(self, 'strike.Collider:rotate', rotated, angle, refx, refy, angle)
   addAngle(self, angle)
   return self
 end
@@ -385,7 +395,7 @@ function Collider:rotateTo(angle, refx, refy)
   refx, refy = optPoint(refx, refy, 'strike.Collider:rotateTo')
   if not refx then refx, refy = self:getCentroid() end
   local a = angle - (self._angle or 0)
-  eachLeaf(self, rotateLeaf, a, refx, refy)
+  eachLeaf(self, 'strike.Collider:rotateTo', rotated, a, refx, refy, a)
   addAngle(self, a)
   return self
 end
@@ -397,7 +407,7 @@ function Collider:scale(sf, refx, refy)
   positive(sf, 'strike.Collider:scale', 'factor')
   refx, refy = optPoint(refx, refy, 'strike.Collider:scale')
   if not refx then refx, refy = self:getCentroid() end
-  eachLeaf(self, scaleLeaf, sf, refx, refy)
+  eachLeaf(self, 'strike.Collider:scale', scaled, sf, refx, refy)
   return self
 end
 
