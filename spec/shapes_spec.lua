@@ -426,8 +426,10 @@ describe('huge and degenerate transforms', function()
     nearList({ r:getCentroid() }, { 1e308, 0 }, 1e300)
     r:translateTo(0, 0)
     raisesAt(function() r:scale(1e200):scale(1e200) end, 'strike.Shape:scale: the result would overflow')
-    raisesAt(function() r:translateTo(0, 0):rotate(math.pi, 1e308, 0) end, 'strike.Shape:rotate: the result would overflow')
-    raisesAt(function() r:scale(1e-200):scale(1e-200):scale(1e-200) end, 'strike.Shape:scale: the scale would underflow to 0')
+    raisesAt(function() r:translateTo(0, 0):rotate(math.pi, 1e308, 0) end,
+      'strike.Shape:rotate: the result would overflow')
+    raisesAt(function() r:scale(1e-200):scale(1e-200):scale(1e-200) end,
+      'strike.Shape:scale: the scale would underflow to 0')
     assert.is_true(r:getScale() > 0)
   end)
 
