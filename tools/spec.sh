@@ -17,7 +17,7 @@ for vm in "$@"; do
     cat "$log"; echo "== $vm: no test summary (exit $rc)" >&2; status=1; continue
   fi
   [ $rc -ne 0 ] && cat "$log"
-  read -r s _ _ f _ _ e _ <<<"$(echo "$line" | tr '/' ' ')"
+  read -r s f e <<<"$(echo "$line" | awk -F' / ' '{ split($1,a," "); split($2,b," "); split($3,c," "); print a[1], b[1], c[1] }')"
   echo "$vm: $s passed, $((f + e)) failed"
   passed=$((passed + s)); failed=$((failed + f + e))
   [ $rc -ne 0 ] && status=1
