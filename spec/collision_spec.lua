@@ -320,3 +320,23 @@ describe('regressions', function()
     assert.equals(1, m.depth)
   end)
 end)
+
+describe('MTV details', function()
+  it('validates its constructor and scale', function()
+    raisesAt(function() S.MTV('1', 0) end, 'strike.MTV: dx must be a finite number, got string "1"')
+    raisesAt(function() S.MTV(0, 0 / 0) end, 'strike.MTV: dy must be a finite number, got nan')
+    raisesAt(function() S.MTV():scale() end, 'strike.MTV:scale: factor must be a finite number, got nil')
+  end)
+
+  it('scale multiplies the vector; set copies every field', function()
+    local m = S.MTV(3, 4):scale(2)
+    nearList(vecOf(m), { 6, 8 })
+    local a, b = H.Circle(0, 0, 2), H.Circle(3, 0, 2)
+    local src = S.AT(a, b)
+    local copy = S.MTV():set(src)
+    for _, k in ipairs({ 'x', 'y', 'nx', 'ny', 'depth', 'separating', 'edgeIndex', 'collider', 'collided',
+      'colliderShape', 'collidedShape' }) do
+      assert.equals(src[k], copy[k], k)
+    end
+  end)
+end)

@@ -154,3 +154,28 @@ describe('a user-defined collider', function()
     assert.truthy(S.triking(p, S.trikers.Circle(5, 5, 1)))
   end)
 end)
+
+describe('a collider file dropped into strike/colliders/', function()
+  local path = 'strike/colliders/SpecDroppedPair.lua'
+  local source = [[
+local root = (...):match('^(.-)%.colliders%.[^%.]+$')
+local Collider = require(root .. '.colliders.Collider')
+local Circle = require(root .. '.shapes.Circle')
+local Pair = Collider:extend()
+function Pair:new(x, y, gap, r)
+  Collider.new(self, Circle(x - gap / 2, y, r), Circle(x + gap / 2, y, r))
+end
+return Pair
+]]
+
+  it('is found by name', function()
+    local f = assert(io.open(path, 'w'))
+    f:write(source)
+    f:close()
+    finally(function() os.remove(path) end)
+    local c = S.trikers.SpecDroppedPair(0, 0, 10, 2)
+    assert.is_true(c:is(S.trikers.Collider))
+    assert.equals('SpecDroppedPair', S.trikers.SpecDroppedPair.name)
+    nearList({ c:getBbox() }, { -7, -2, 14, 4 })
+  end)
+end)

@@ -442,3 +442,18 @@ describe('huge and degenerate transforms', function()
     nearList({ c.shapes[1]:getCentroid() }, { 0, 0 })
   end)
 end)
+
+describe('ConvexPolygon:merge', function()
+  it('returns the union when it is convex, else false', function()
+    local a, b = S.hapes.Rectangle(0, 0, 2), S.hapes.Rectangle(2, 0, 2)
+    local m = a:merge(b)
+    assert.equals(S.hapes.ConvexPolygon, getmetatable(m))
+    assert.equals(8, m:getArea())
+    nearList({ m:getBbox() }, { -1, -1, 4, 2 })
+    assert.is_false(a:merge(S.hapes.Rectangle(1, 0, 2)))   -- overlapping
+    assert.is_false(a:merge(S.hapes.Rectangle(2, 1, 2)))   -- an L step
+    assert.is_false(a:merge(S.hapes.Circle(2, 0, 1)))
+    assert.is_false(a:merge(S.hapes.Edge(1, -1, 1, 1)))
+    assert.is_false(a:merge(nil))
+  end)
+end)

@@ -12,7 +12,7 @@ for cmd in "$@" busted luacheck; do
 done
 [ ${#missing[@]} -eq 0 ] && exit 0
 echo "== installing missing packages: ${missing[*]}"
-if [ "$(id -u)" = 0 ] && command -v apt-get >/dev/null 2>&1; then
+if [ "${EUID:-$(id -u)}" = 0 ] && command -v apt-get >/dev/null 2>&1; then
   export DEBIAN_FRONTEND=noninteractive
   apt-get update -qq && apt-get install -y -qq "${missing[@]}" >/dev/null && exit 0
   echo "apt-get could not install: ${missing[*]}" >&2

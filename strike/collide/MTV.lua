@@ -5,6 +5,7 @@
 --- separates them (they end up exactly touching).
 local ROOT = (...):match('^(.-)%.collide%.[^%.]+$')
 local Object = require(ROOT .. '.class')
+local check = require(ROOT .. '.check')
 
 local sqrt = math.sqrt
 
@@ -30,7 +31,8 @@ MTV.name = 'MTV'
 ---@param colliderShape strike.Shape|nil @param collidedShape strike.Shape|nil
 ---@param separating boolean|nil
 function MTV:new(dx, dy, colliderShape, collidedShape, separating)
-  dx, dy = dx or 0, dy or 0
+  dx = check.optNumber(dx, 'strike.MTV', 'dx', 0)
+  dy = check.optNumber(dy, 'strike.MTV', 'dy', 0)
   self.x, self.y = dx, dy
   local l = sqrt(dx * dx + dy * dy)
   if l > 0 then self.nx, self.ny = dx / l, dy / l else self.nx, self.ny = 0, 0 end
@@ -49,10 +51,11 @@ function MTV:mag() return sqrt(self.x * self.x + self.y * self.y) end
 ---@return number
 function MTV:mag2() return self.x * self.x + self.y * self.y end
 
---- Multiply the vector by s (the normal keeps its direction when s > 0).
+--- Multiply the vector by s (the normal and depth are left as they are).
 ---@param s number
 ---@return self
 function MTV:scale(s)
+  check.number(s, 'strike.MTV:scale', 'factor')
   self.x, self.y = self.x * s, self.y * s
   return self
 end

@@ -3,7 +3,7 @@ local ROOT = (...):match('^(.-)%.shapes%.[^%.]+$')
 local VertexShape = require(ROOT .. '.base.VertexShape')
 local check = require(ROOT .. '.check')
 local hull = require(ROOT .. '.geometry.hull')
-local vec = require(ROOT .. '.vec')
+local polygon = require(ROOT .. '.geometry.polygon')
 local unpack = require(ROOT .. '.compat').unpack
 local maxSeparation = require(ROOT .. '.collide.sat').maxSeparation
 
@@ -68,7 +68,7 @@ function ConvexPolygon:new(...)
     end
   end
   hull.startAt(hx, hy, h, xs[1], ys[1])
-  local area, cx, cy = vec.polygonAreaCentroid(hx, hy, h)
+  local area, cx, cy = polygon.areaCentroid(hx, hy, h)
   if not (finite(area) and finite(cx) and finite(cy)) or area <= 0 then
     fail(('%s: coordinates too large or too close together (area %s)'):format(fname, describe(area)))
   end
@@ -95,7 +95,7 @@ function ConvexPolygon:merge(other)
     end
   end
   local hx, hy, h = hull.build(xs, ys, n)
-  local area = vec.polygonAreaCentroid(hx, hy, h)
+  local area = polygon.areaCentroid(hx, hy, h)
   local sum = self:getArea() + other:getArea()
   if abs(area - sum) > 1e-9 * sum then return false end
   local pts = {}
