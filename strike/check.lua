@@ -93,6 +93,7 @@ function check.integer(v, fname, what, lo, hi)
 end
 
 --- Either both of an optional reference point are given, or neither.
+---@param x any @param y any @param fname string
 ---@return number|nil, number|nil
 function check.optPoint(x, y, fname)
   if x == nil and y == nil then return nil, nil end

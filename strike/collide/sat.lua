@@ -64,6 +64,8 @@ end
 sat.maxSeparation = maxSeparation
 
 --- Polygon (or edge) A against polygon (or edge) B.
+---@param A strike.VertexShape @param B strike.VertexShape @param out table an MTV-shaped table
+---@return table out
 function sat.polygonPolygon(A, B, out)
   if A._dirty then A:_refresh() end
   if B._dirty then B:_refresh() end
@@ -114,14 +116,18 @@ local function polygonCircle(P, C, out, flip)
 end
 
 --- Polygon (or edge) P against circle C.
+---@param P strike.VertexShape @param C strike.Circle @param out table
 ---@return table out
 function sat.polygonCircle(P, C, out) return polygonCircle(P, C, out, false) end
 
 --- Circle C against polygon (or edge) P.
+---@param C strike.Circle @param P strike.VertexShape @param out table
 ---@return table out
 function sat.circlePolygon(C, P, out) return polygonCircle(P, C, out, true) end
 
 --- Circle against circle. Concentric circles get the normal (0, -1).
+---@param A strike.Circle @param B strike.Circle @param out table
+---@return table out
 function sat.circleCircle(A, B, out)
   local dx, dy = B._x - A._x, B._y - A._y
   local d = sqrt(dx * dx + dy * dy)

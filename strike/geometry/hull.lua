@@ -67,6 +67,7 @@ end
 
 --- True when (x, y) lies strictly inside the convex polygon hx, hy (count h, positive
 --- winding), farther than the collinearity tolerance from every edge.
+---@param hx number[] @param hy number[] @param h integer @param x number @param y number
 ---@return boolean
 function hull.strictlyInside(hx, hy, h, x, y)
   for i = 1, h do
@@ -80,6 +81,7 @@ function hull.strictlyInside(hx, hy, h, x, y)
 end
 
 --- Rotate the hull in place so that it starts at the vertex equal to (x, y), if any.
+---@param hx number[] @param hy number[] @param h integer @param x number @param y number
 function hull.startAt(hx, hy, h, x, y)
   local s
   for i = 1, h do
