@@ -92,6 +92,30 @@ function check.integer(v, fname, what, lo, hi)
   return v
 end
 
+--- Coordinates given as x1, y1, x2, y2, ... or as one table {x1, y1, ...}: split into
+--- arrays of finite numbers, or raise an error naming the bad value.
+---@param fname string @param ... number|number[]
+---@return number[] xs, number[] ys, integer n
+function check.coordinates(fname, ...)
+  local args, count = ..., select('#', ...)
+  if type(args) == 'table' then count = #args else args = { ... } end
+  if count % 2 ~= 0 then
+    check.fail(('%s: expected x, y pairs, got an odd number of values (%d)'):format(fname, count))
+  end
+  local xs, ys, n = {}, {}, (count - count % 2) / 2
+  for i = 1, n do
+    local x, y = args[2 * i - 1], args[2 * i]
+    if not finite(x) then
+      check.fail(('%s: x%d must be a finite number, got %s'):format(fname, i, check.describe(x)))
+    end
+    if not finite(y) then
+      check.fail(('%s: y%d must be a finite number, got %s'):format(fname, i, check.describe(y)))
+    end
+    xs[i], ys[i] = x, y
+  end
+  return xs, ys, n
+end
+
 --- Either both of an optional reference point are given, or neither.
 ---@param x any @param y any @param fname string
 ---@return number|nil, number|nil

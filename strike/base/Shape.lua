@@ -38,15 +38,21 @@ local function setPose(self, x, y, scale, fname)
   self._x, self._y, self._scale = x, y, scale
 end
 
---- Mark this shape's world-space cache, and every enclosing collider's aggregates, as
---- stale (see the cache protocol in colliders/Collider.lua).
-function Shape:_touch()
-  self._dirty = true
-  local p = self.parent
+--- Mark collider `p` and every collider enclosing it as stale. A collider that is not
+--- clean has no clean ancestor, so the walk stops at the first one already marked (see the
+--- cache protocol in colliders/Collider.lua).
+---@param p strike.Collider|nil
+function Shape._invalidate(p)
   while p and p._clean do
     p._clean = false
     p = p.parent
   end
+end
+
+--- Mark this shape's world-space cache, and every enclosing collider's aggregates, as stale.
+function Shape:_touch()
+  self._dirty = true
+  Shape._invalidate(self.parent)
 end
 
 --- Recompute world-space data. Subclasses override it; it must clear `_dirty`.

@@ -61,6 +61,11 @@ function VertexShape:_refresh()
   self._dirty = false
 end
 
+-- i is a whole number from 1 to n.
+local function inRange(i, n)
+  return type(i) == 'number' and i >= 1 and i <= n and i % 1 == 0
+end
+
 --- Number of vertices (2 for an Edge).
 ---@return integer
 function VertexShape:getVertexCount() return self._n end
@@ -69,7 +74,7 @@ function VertexShape:getVertexCount() return self._n end
 ---@param i integer
 ---@return number|nil x, number|nil y
 function VertexShape:getVertex(i)
-  if type(i) ~= 'number' or i < 1 or i > self._n or i % 1 ~= 0 then return nil end
+  if not inRange(i, self._n) then return nil end
   if self._dirty then self:_refresh() end
   return self._wx[i], self._wy[i]
 end
@@ -80,7 +85,7 @@ end
 ---@return number|nil x1, number|nil y1, number|nil x2, number|nil y2
 function VertexShape:getEdge(i)
   local n = self._n
-  if type(i) ~= 'number' or i < 1 or i > n or i % 1 ~= 0 then return nil end
+  if not inRange(i, n) then return nil end
   if self._dirty then self:_refresh() end
   local j = i < n and i + 1 or 1
   local wx, wy = self._wx, self._wy
@@ -91,7 +96,7 @@ end
 ---@param i integer
 ---@return number|nil nx, number|nil ny
 function VertexShape:getNormal(i)
-  if type(i) ~= 'number' or i < 1 or i > self._n or i % 1 ~= 0 then return nil end
+  if not inRange(i, self._n) then return nil end
   if self._dirty then self:_refresh() end
   return self._wnx[i], self._wny[i]
 end

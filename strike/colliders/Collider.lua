@@ -35,15 +35,10 @@ function Collider:new(...)
   self:add(...)
 end
 
--- Clear `_clean` here and on every enclosing collider. If a collider is not clean, none
--- of its ancestors is, so the walk stops at the first one already marked.
+-- Clear `_clean` here and on every enclosing collider.
 local function invalidate(self)
   self._clean = false
-  local p = self.parent
-  while p and p._clean do
-    p._clean = false
-    p = p.parent
-  end
+  Shape._invalidate(self.parent)
 end
 
 --- Add shapes and colliders as children. A child may belong to one collider only.

@@ -14,22 +14,7 @@ Concave.name = 'Concave'
 --- then Hertel-Mehlhorn merging). Self-intersecting or degenerate outlines are an error.
 ---@param ... number|number[]
 function Concave:new(...)
-  local args, count = ..., select('#', ...)
-  if type(args) == 'table' then count = #args else args = { ... } end
-  if count % 2 ~= 0 then
-    check.fail(('strike.Concave: expected x, y pairs, got an odd number of values (%d)'):format(count))
-  end
-  local xs, ys, n = {}, {}, count / 2
-  for i = 1, n do
-    local x, y = args[2 * i - 1], args[2 * i]
-    if not check.finite(x) then
-      check.fail(('strike.Concave: x%d must be a finite number, got %s'):format(i, check.describe(x)))
-    end
-    if not check.finite(y) then
-      check.fail(('strike.Concave: y%d must be a finite number, got %s'):format(i, check.describe(y)))
-    end
-    xs[i], ys[i] = x, y
-  end
+  local xs, ys, n = check.coordinates('strike.Concave', ...)
   local pieces, err = decompose.decompose(xs, ys, n)
   if not pieces then check.fail('strike.Concave: ' .. err) end
   Collider.new(self)

@@ -24,26 +24,7 @@ ConvexPolygon.name = 'ConvexPolygon'
 ---@param ... number|number[]
 function ConvexPolygon:new(...)
   local fname = 'strike.' .. (self.name or 'ConvexPolygon')
-  local args, count = ..., select('#', ...)
-  if type(args) == 'table' then
-    count = #args
-  else
-    args = { ... }
-  end
-  if count % 2 ~= 0 then
-    fail(('%s: expected x, y pairs, got an odd number of values (%d)'):format(fname, count))
-  end
-  local xs, ys, n = {}, {}, count / 2
-  for i = 1, n do
-    local x, y = args[2 * i - 1], args[2 * i]
-    if not finite(x) then
-      fail(('%s: x%d must be a finite number, got %s'):format(fname, i, describe(x)))
-    end
-    if not finite(y) then
-      fail(('%s: y%d must be a finite number, got %s'):format(fname, i, describe(y)))
-    end
-    xs[i], ys[i] = x, y
-  end
+  local xs, ys, n = check.coordinates(fname, ...)
   local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
   for i = 1, n do
     local x, y = xs[i], ys[i]
