@@ -50,6 +50,8 @@ local function checkOut(fname, out, i)
   end
 end
 
+local root = require(ROOT .. '.collide.sat').root
+
 --- Separating-axis test between two convex shapes. Always returns an MTV (filled into
 --- `out` when given); check `mtv.separating`. The vector points from shape1 toward shape2.
 ---@param shape1 strike.Shape @param shape2 strike.Shape @param out strike.MTV|nil
@@ -62,7 +64,9 @@ function S.AT(shape1, shape2, out)
     badShape('strike.AT', 2, shape2)
   end
   if out == nil then out = MTV() elseif type(out) ~= 'table' then checkOut('strike.AT', out, 3) end
-  return test(shape1, shape2, out)
+  test(shape1, shape2, out)
+  out.collider, out.collided = root(shape1), root(shape2)
+  return out
 end
 
 -- Scratch state for S.triking: two MTVs swapped as the best one changes, and one-slot
@@ -83,42 +87,60 @@ local function leavesOf(v, slot, fname, i)
   fail(('%s: argument %d must be a strike collider or shape, got %s'):format(fname, i, describe(v)))
 end
 
-local root = require(ROOT .. '.collide.sat').root
-
 --- Collision between two colliders (or shapes): the deepest MTV over all pairs of their
 --- leaf shapes, or false when no pair collides. Members of one collider never collide
---- with each other. The vector points from collider1 toward collider2.
+--- with each other (nor with the members of colliders nested in it). The vector points
+--- from collider1 toward collider2.
 ---@param collider1 strike.Collider|strike.Shape @param collider2 strike.Collider|strike.Shape
----@param out strike.MTV|nil filled and returned on a collision
+---@param out strike.MTV|nil filled and returned on a collision; its contents are unspecified after false
 ---@return strike.MTV|false
 function S.triking(collider1, collider2, out)
-  local l1, n1 = leavesOf(collider1, single1, 'strike.triking', 1)
-  local l2, n2 = leavesOf(collider2, single2, 'strike.triking', 2)
-  checkOut('strike.triking', out, 3)
-  local best, tmp, found = tmpA, tmpB, false
+  local l1, n1, l2, n2
+  -- (colliders inline: this is the hot path)
+  if type(collider1) == 'table' and collider1._clean then
+    l1, n1 = collider1._leaves, collider1._nleaves
+  else
+    l1, n1 = leavesOf(collider1, single1, 'strike.triking', 1)
+  end
+  if type(collider2) == 'table' and collider2._clean then
+    l2, n2 = collider2._leaves, collider2._nleaves
+  else
+    l2, n2 = leavesOf(collider2, single2, 'strike.triking', 2)
+  end
+  if out ~= nil and type(out) ~= 'table' then checkOut('strike.triking', out, 3) end
+  local r1, r2 = collider1, collider2
+  while r1.parent do r1 = r1.parent end
+  while r2.parent do r2 = r2.parent end
+  if r1 == r2 then -- every leaf pair would share a root
+    single1[1], single2[1] = nil, nil
+    return false
+  end
+  -- Test into `tmp`; a deeper result becomes `best` and the other buffer becomes `tmp`.
+  -- With an `out` table it is one of the two buffers, so the usual single hit needs no copy.
+  local best, tmp, found = tmpA, out or tmpB, false
   local bestDepth = 0
   for i = 1, n1 do
     local a = l1[i]
-    local ra = root(a)
-    local ax0, ay0, ax1, ay1 = a:getBounds()
+    if a._dirty then a:_refresh() end
+    local ax0, ay0, ax1, ay1 = a._minx, a._miny, a._maxx, a._maxy
     local row = dispatch[a.kind]
     for j = 1, n2 do
       local b = l2[j]
-      if root(b) ~= ra then
-        local bx0, by0, bx1, by1 = b:getBounds()
-        if ax0 < bx1 and bx0 < ax1 and ay0 < by1 and by0 < ay1 then
-          row[b.kind](a, b, tmp)
-          if not tmp.separating and tmp.depth > bestDepth then
-            best, tmp, found, bestDepth = tmp, best, true, tmp.depth
-          end
+      if b._dirty then b:_refresh() end
+      if ax0 < b._maxx and b._minx < ax1 and ay0 < b._maxy and b._miny < ay1 then
+        row[b.kind](a, b, tmp)
+        local d = tmp.depth
+        if d > bestDepth then -- (false for NaN and for separating results)
+          best, tmp, found, bestDepth = tmp, best, true, d
         end
       end
     end
   end
-  single1[1], single2[1] = nil, nil
+  single1[1], single2[1] = nil, nil -- (bare shapes are not kept alive by strike)
   if not found then return false end
-  out = out or MTV()
-  return MTV.set(out, best)
+  if best ~= out then out = MTV.set(out or MTV(), best) end
+  out.collider, out.collided = r1, r2
+  return out
 end
 
 local function checkMTV(fname, mtv)

@@ -23,6 +23,7 @@ Shape.name = 'Shape'
 --- Set the pose: the centroid at (x, y), angle 0, scale 1. Called by constructors.
 ---@param x number @param y number
 function Shape:_setPose(x, y)
+  self.kind = self.kind -- an own copy of the class's kind: the dispatch reads it every test
   self._x, self._y = x, y
   self._angle, self._cos, self._sin, self._scale = 0, 1, 0, 1
   self._dirty = true

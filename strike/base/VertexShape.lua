@@ -2,7 +2,8 @@
 --- Geometry lives in flat number arrays with a count:
 ---   _lx, _ly    local vertices (relative to the centroid, unrotated, unscaled), positive winding
 ---   _lnx, _lny  local unit outward normals, normal i belongs to edge i (vertex i to vertex i+1)
----   _wx, _wy, _wnx, _wny and _minx.._maxy: world-space copies, refreshed when dirty.
+---   _wx, _wy, _wnx, _wny and _minx.._maxy: world-space copies, refreshed when dirty;
+---   _wd[i] = dot(normal i, vertex i): the offset of edge i's line along its normal.
 local ROOT = (...):match('^(.-)%.base%.[^%.]+$')
 local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
@@ -33,7 +34,7 @@ function VertexShape:_setVertices(xs, ys, n, cx, cy, area)
     lnx[i], lny[i] = ey / l, -ex / l
   end
   self._n, self._lx, self._ly, self._lnx, self._lny = n, lx, ly, lnx, lny
-  self._wx, self._wy, self._wnx, self._wny = {}, {}, {}, {}
+  self._wx, self._wy, self._wnx, self._wny, self._wd = {}, {}, {}, {}, {}
   self._area, self._radius = area, sqrt(r2)
   self:_setPose(cx, cy)
 end
@@ -43,7 +44,7 @@ function VertexShape:_refresh()
   local c, s, k = self._cos, self._sin, self._scale
   local x0, y0 = self._x, self._y
   local lx, ly, lnx, lny = self._lx, self._ly, self._lnx, self._lny
-  local wx, wy, wnx, wny = self._wx, self._wy, self._wnx, self._wny
+  local wx, wy, wnx, wny, wd = self._wx, self._wy, self._wnx, self._wny, self._wd
   local minx, miny, maxx, maxy = huge, huge, -huge, -huge
   local sc, ss = c * k, s * k
   for i = 1, n do
@@ -55,7 +56,8 @@ function VertexShape:_refresh()
     if py < miny then miny = py end
     if py > maxy then maxy = py end
     x, y = lnx[i], lny[i]
-    wnx[i], wny[i] = c * x - s * y, s * x + c * y
+    x, y = c * x - s * y, s * x + c * y
+    wnx[i], wny[i], wd[i] = x, y, x * px + y * py
   end
   self._minx, self._miny, self._maxx, self._maxy = minx, miny, maxx, maxy
   self._dirty = false

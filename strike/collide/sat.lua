@@ -25,32 +25,39 @@ end
 --- root(shape): the outermost collider holding the shape, or the shape itself.
 sat.root = root
 
--- Fill `out`. (nx, ny) is the unit normal from a to b, depth > 0 means overlap.
+-- Fill `out`. (nx, ny) is the unit normal from a to b, depth > 0 means overlap. The
+-- callers (S.AT, S.triking) set out.collider and out.collided.
 local function result(out, a, b, nx, ny, depth, edge)
   local m = depth > 0 and depth or -depth
   out.x, out.y, out.nx, out.ny, out.depth = nx * m, ny * m, nx, ny, depth
   out.separating = not (depth > 0) -- luacheck: ignore 581 (NaN depth must read as separating)
   out.edgeIndex = edge
   out.colliderShape, out.collidedShape = a, b
-  out.collider, out.collided = root(a), root(b)
   return out
 end
---- result(out, a, b, nx, ny, depth, edge): fill an MTV-shaped table and return it.
+--- result(out, a, b, nx, ny, depth, edge): fill an MTV-shaped table (all but collider and
+--- collided) and return it.
 sat.result = result
 
 -- Largest, over A's faces, of the smallest signed distance of B's vertices in front of
--- the face; stops early at the first face with nothing of B behind it (>= 0).
+-- the face; stops early at the first face with nothing of B behind it (>= 0). A face is
+-- abandoned as soon as one vertex of B shows it cannot beat the best face so far.
 local function maxSeparation(A, B)
-  local ax, ay, anx, any = A._wx, A._wy, A._wnx, A._wny
+  local anx, any, ad = A._wnx, A._wny, A._wd
   local bx, by, nb = B._wx, B._wy, B._n
   local best, bi = -huge, 1
   for i = 1, A._n do
-    local nx, ny, vx, vy = anx[i], any[i], ax[i], ay[i]
+    local nx, ny = anx[i], any[i]
+    local floor = best + ad[i] -- a projection at or below this cannot beat `best`
     local s = huge
     for j = 1, nb do
-      local d = nx * (bx[j] - vx) + ny * (by[j] - vy)
-      if d < s then s = d end
+      local p = nx * bx[j] + ny * by[j]
+      if p < s then
+        s = p
+        if p <= floor then break end
+      end
     end
+    s = s - ad[i]
     if s > best then
       best, bi = s, i
       if s >= 0 then return s, i end
