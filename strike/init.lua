@@ -77,7 +77,7 @@ local single1, single2 = {}, {}
 local function leavesOf(v, slot, fname, i)
   if type(v) == 'table' then
     if v.type == 'collider' then
-      if not v._clean then v._refresh(v) end
+      if not v._leavesOK then v._refreshLeaves(v) end
       return v._leaves, v._nleaves
     elseif dispatch[v.kind] then
       slot[1] = v
@@ -97,12 +97,12 @@ end
 function S.triking(collider1, collider2, out)
   local l1, n1, l2, n2
   -- (colliders inline: this is the hot path)
-  if type(collider1) == 'table' and collider1._clean then
+  if type(collider1) == 'table' and collider1._leavesOK then
     l1, n1 = collider1._leaves, collider1._nleaves
   else
     l1, n1 = leavesOf(collider1, single1, 'strike.triking', 1)
   end
-  if type(collider2) == 'table' and collider2._clean then
+  if type(collider2) == 'table' and collider2._leavesOK then
     l2, n2 = collider2._leaves, collider2._nleaves
   else
     l2, n2 = leavesOf(collider2, single2, 'strike.triking', 2)

@@ -39,21 +39,16 @@ local function setPose(self, x, y, scale, fname)
   self._x, self._y, self._scale = x, y, scale
 end
 
---- Mark collider `p` and every collider enclosing it as stale. A collider that is not
---- clean has no clean ancestor, so the walk stops at the first one already marked (see the
---- cache protocol in colliders/Collider.lua).
----@param p strike.Collider|nil
-function Shape._invalidate(p)
-  while p and p._clean do
-    p._clean = false
-    p = p.parent
-  end
-end
-
---- Mark this shape's world-space cache, and every enclosing collider's aggregates, as stale.
+--- Mark this shape's world-space cache, and every enclosing collider's area, centroid,
+--- bounds and radius, as stale. The walk stops at the first collider already marked (see
+--- the cache protocol in colliders/Collider.lua).
 function Shape:_touch()
   self._dirty = true
-  Shape._invalidate(self.parent)
+  local p = self.parent
+  while p and (p._massOK or p._clean) do
+    p._massOK, p._clean = false, false
+    p = p.parent
+  end
 end
 
 --- Recompute world-space data. Subclasses override it; it must clear `_dirty`.

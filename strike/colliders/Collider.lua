@@ -2,9 +2,15 @@
 --- collide with each other. Area, centroid, radius and bounds are aggregates of the leaf
 --- shapes, cached and recomputed on the next query after anything in the tree changes.
 ---
---- Cache protocol: `_clean` is true while the aggregates are valid. A change to a leaf or
---- to the structure clears `_clean` on every enclosing collider (Shape:_touch); a refresh
---- recomputes bottom-up, so a clean collider never holds a stale nested one.
+--- Cache protocol, three flags, each recomputed lazily and bottom-up:
+---   `_leavesOK`  the flat leaf list (cleared by add, remove, consolidate);
+---   `_massOK`    area and centroid (cleared also when any leaf moves);
+---   `_clean`     bounds and radius (cleared also when any leaf moves).
+--- For each flag: when a collider's flag is false, so is every enclosing collider's (the
+--- refresh of a collider refreshes its nested colliders first). So a change walks up only
+--- until it meets a collider already marked. Transforms of a collider need only the leaf
+--- list, so moving a collider every frame costs one world-vertex refresh per leaf, at the
+--- next query.
 local ROOT = (...):match('^(.-)%.colliders%.[^%.]+$')
 local Object = require(ROOT .. '.class')
 local Shape = require(ROOT .. '.base.Shape')
@@ -35,10 +41,13 @@ function Collider:new(...)
   self:add(...)
 end
 
--- Clear `_clean` here and on every enclosing collider.
+-- The structure changed: clear every flag here and on every enclosing collider.
 local function invalidate(self)
-  self._clean = false
-  Shape._invalidate(self.parent)
+  local p = self
+  while p and (p._leavesOK or p._massOK or p._clean) do
+    p._leavesOK, p._massOK, p._clean = false, false, false
+    p = p.parent
+  end
 end
 
 --- Add shapes and colliders as children. A child may belong to one collider only.
@@ -110,19 +119,17 @@ function Collider:unpack()
   return unpack(shapes, 1, #shapes)
 end
 
--- Recompute leaves, area, centroid, radius and bounds, bottom-up.
-local function refresh(self)
+-- Level 1: the flat list of leaves (`_leaves`, `_leafPos`, `_nleaves`), bottom-up.
+local function refreshLeaves(self)
   local shapes = self.shapes or {}
   local leaves, pos = self._leaves, self._leafPos
   if not leaves then leaves, pos = {}, {}; self._leaves, self._leafPos = leaves, pos end
   for k in pairs(pos) do pos[k] = nil end
   local nl = 0
-  local area, ax, ay, len, lx, ly = 0, 0, 0, 0, 0, 0
-  local minx, miny, maxx, maxy = huge, huge, -huge, -huge
   for i = 1, #shapes do
     local c = shapes[i]
     if c.shapes then
-      if not c._clean then refresh(c) end
+      if not c._leavesOK then refreshLeaves(c) end
       local cl = c._leaves
       for k = 1, c._nleaves do
         nl = nl + 1
@@ -136,37 +143,68 @@ local function refresh(self)
     end
   end
   for i = #leaves, nl + 1, -1 do leaves[i] = nil end
-  for i = 1, nl do
-    local s = leaves[i]
-    local a = s:getArea()
-    local x, y = s._x, s._y
-    if a > 0 then
-      area, ax, ay = area + a, ax + a * x, ay + a * y
+  self._nleaves = nl
+  if not self._angle then self._angle = 0 end
+  self._leavesOK = true
+end
+Collider._refreshLeaves = refreshLeaves
+
+-- Level 2: area and centroid, bottom-up from the children's own sums. Needs no world
+-- vertices. Edges (no area) weigh by length, used when the whole tree has no area.
+local function refreshMass(self)
+  if not self._leavesOK then refreshLeaves(self) end
+  local shapes = self.shapes or {}
+  local area, ax, ay, len, lx, ly = 0, 0, 0, 0, 0, 0
+  for i = 1, #shapes do
+    local c = shapes[i]
+    if c.shapes then
+      if not c._massOK then refreshMass(c) end
+      area, ax, ay = area + c._area, ax + c._ax, ay + c._ay
+      len, lx, ly = len + c._len, lx + c._lx, ly + c._ly
     else
-      local l = 2 * s:getRadius()
-      len, lx, ly = len + l, lx + l * x, ly + l * y
+      local a = c:getArea()
+      if a > 0 then
+        area, ax, ay = area + a, ax + a * c._x, ay + a * c._y
+      else
+        local l = 2 * c:getRadius()
+        len, lx, ly = len + l, lx + l * c._x, ly + l * c._y
+      end
     end
-    local x0, y0, x1, y1 = s:getBounds()
+  end
+  self._area, self._ax, self._ay, self._len, self._lx, self._ly = area, ax, ay, len, lx, ly
+  if area > 0 then
+    self._cx, self._cy = ax / area, ay / area
+  elseif len > 0 then
+    self._cx, self._cy = lx / len, ly / len
+  else
+    self._cx, self._cy = 0, 0
+  end
+  self._massOK = true
+end
+
+-- Level 3: bounds and radius (these need the leaves' world vertices).
+local function refresh(self)
+  if not self._massOK then refreshMass(self) end
+  local shapes = self.shapes or {}
+  local minx, miny, maxx, maxy = huge, huge, -huge, -huge
+  for i = 1, #shapes do
+    local c = shapes[i]
+    if c.shapes and not c._clean then refresh(c) end
+    local x0, y0, x1, y1 = c:getBounds()
+    if c.shapes and c._nleaves == 0 then x0, y0, x1, y1 = huge, huge, -huge, -huge end
     if x0 < minx then minx = x0 end
     if y0 < miny then miny = y0 end
     if x1 > maxx then maxx = x1 end
     if y1 > maxy then maxy = y1 end
   end
-  local cx, cy = 0, 0
-  if area > 0 then
-    cx, cy = ax / area, ay / area
-  elseif len > 0 then
-    cx, cy = lx / len, ly / len
-  end
-  if nl == 0 then minx, miny, maxx, maxy = 0, 0, 0, 0 end
-  local r = 0
-  for i = 1, nl do
+  if self._nleaves == 0 then minx, miny, maxx, maxy = 0, 0, 0, 0 end
+  local cx, cy, leaves, r = self._cx, self._cy, self._leaves, 0
+  for i = 1, self._nleaves do
     local d = leaves[i]:_farthest(cx, cy)
     if d > r then r = d end
   end
-  self._nleaves, self._area, self._cx, self._cy, self._radius = nl, area, cx, cy, r
+  self._radius = r
   self._minx, self._miny, self._maxx, self._maxy = minx, miny, maxx, maxy
-  if not self._angle then self._angle = 0 end
   self._clean = true
 end
 Collider._refresh = refresh
@@ -174,7 +212,7 @@ Collider._refresh = refresh
 --- Recompute area and centroid now (they are also kept up to date automatically).
 ---@return self
 function Collider:calcAreaCentroid()
-  self._clean = false
+  self._massOK, self._clean = false, false
   refresh(self)
   return self
 end
@@ -186,7 +224,7 @@ Collider.calcRadius = Collider.calcAreaCentroid
 --- Total area of the leaf shapes (overlapping members count twice; edges add nothing).
 ---@return number
 function Collider:getArea()
-  if not self._clean then refresh(self) end
+  if not self._massOK then refreshMass(self) end
   return self._area
 end
 
@@ -194,14 +232,14 @@ end
 --- only, the length-weighted mean of their midpoints; (0, 0) when empty.
 ---@return number x, number y
 function Collider:getCentroid()
-  if not self._clean then refresh(self) end
+  if not self._massOK then refreshMass(self) end
   return self._cx, self._cy
 end
 
 --- Area and centroid together.
 ---@return number area, number x, number y
 function Collider:getAreaCentroid()
-  if not self._clean then refresh(self) end
+  if not self._massOK then refreshMass(self) end
   return self:getArea(), self._cx, self._cy
 end
 
@@ -234,7 +272,7 @@ function Collider:getAngle() return self._angle or 0 end
 --- Number of leaf shapes in the whole tree.
 ---@return integer
 function Collider:getShapeCount()
-  if not self._clean then refresh(self) end
+  if not self._leavesOK then refreshLeaves(self) end
   return self._nleaves
 end
 
@@ -252,7 +290,7 @@ end
 --- `for shape in collider:elems() do`. Allocates nothing.
 ---@return function, strike.Collider, nil
 function Collider:elems()
-  if not self._clean then refresh(self) end
+  if not self._leavesOK then refreshLeaves(self) end
   return elemsIter, self, nil
 end
 
@@ -260,7 +298,7 @@ end
 --- `for parent, shape, index in collider:ipairs() do`. Makes one closure per call.
 ---@return function
 function Collider:ipairs()
-  if not self._clean then refresh(self) end
+  if not self._leavesOK then refreshLeaves(self) end
   local leaves, i = self._leaves, 0
   return function()
     i = i + 1
@@ -280,7 +318,7 @@ end
 function Collider:project(nx, ny)
   number(nx, 'strike.Collider:project', 'nx')
   number(ny, 'strike.Collider:project', 'ny')
-  if not self._clean then refresh(self) end
+  if not self._leavesOK then refreshLeaves(self) end
   local lo, hi = huge, -huge
   local leaves = self._leaves
   for i = 1, self._nleaves do
@@ -296,7 +334,7 @@ end
 ---@return boolean
 function Collider:containsPoint(x, y)
   x, y = Shape._point(x, y, 'strike.Collider:containsPoint')
-  if not self._clean then refresh(self) end
+  if not self._leavesOK then refreshLeaves(self) end
   local leaves = self._leaves
   for i = 1, self._nleaves do
     if leaves[i]:containsPoint(x, y) then return true end
@@ -320,7 +358,7 @@ end
 -- Give every leaf its new pose (and turn it by `turn`), or, when some leaf would overflow,
 -- raise an error at the caller's line before anything moves.
 local function eachLeaf(self, fname, pose, a, b, c, turn)
-  if not self._clean then refresh(self) end
+  if not self._leavesOK then refreshLeaves(self) end
   local leaves, n = self._leaves, self._nleaves
   for i = 1, n do
     local s = leaves[i]
@@ -415,7 +453,7 @@ function Collider:copy(x, y, angle)
   for k, v in pairs(self) do
     if k ~= 'parent' and k ~= 'shapes' and k ~= '_leaves' and k ~= '_leafPos' then c[k] = Shape._clone(v) end
   end
-  c._clean, c.shapes = false, {}
+  c._leavesOK, c._massOK, c._clean, c.shapes = false, false, false, {}
   local shapes = self.shapes or {}
   for i = 1, #shapes do
     local child = shapes[i]:copy()
