@@ -40,24 +40,44 @@ end
 sat.result = result
 
 -- Largest, over A's faces, of the smallest signed distance of B's vertices in front of
--- the face; stops early at the first face with nothing of B behind it (>= 0). A face is
--- abandoned as soon as one vertex of B shows it cannot beat the best face so far.
+-- the face; stops early at the first face with nothing of B behind it (>= 0).
+--
+-- The smallest distance for face i is B's support point in direction -n_i. A's normals
+-- turn counter-clockwise from face to face, so that support point moves forward around
+-- B (the rotating-calipers argument, Toussaint 1983): after one full scan for face 1,
+-- each face walks forward from the previous support while the projection keeps falling.
+-- On a convex polygon the projection along the boundary has a single minimum, so the
+-- walk stops exactly there. The whole pass costs O(n + m) instead of O(n * m).
+-- An Edge's two faces point opposite ways: a half turn, after which the old support is
+-- the new maximum, so each of them gets a full scan instead.
 local function maxSeparation(A, B)
   local anx, any, ad = A._wnx, A._wny, A._wd
   local bx, by, nb = B._wx, B._wy, B._n
-  local best, bi = -huge, 1
-  for i = 1, A._n do
+  local best, bi, j = -huge, 1, 1
+  local pj
+  local first = A._n == 2 and 2 or 1 -- faces scanned in full
+  for i = 1, first do
     local nx, ny = anx[i], any[i]
-    local floor = best + ad[i] -- a projection at or below this cannot beat `best`
-    local s = huge
-    for j = 1, nb do
-      local p = nx * bx[j] + ny * by[j]
-      if p < s then
-        s = p
-        if p <= floor then break end
-      end
+    j, pj = 1, nx * bx[1] + ny * by[1]
+    for k = 2, nb do
+      local p = nx * bx[k] + ny * by[k]
+      if p < pj then j, pj = k, p end
     end
-    s = s - ad[i]
+    local s = pj - ad[i]
+    if s > best then
+      best, bi = s, i
+      if s >= 0 then return s, i end
+    end
+  end
+  for i = first + 1, A._n do
+    local nx, ny = anx[i], any[i]
+    pj = nx * bx[j] + ny * by[j]
+    while true do
+      local k = j < nb and j + 1 or 1
+      local p = nx * bx[k] + ny * by[k]
+      if p < pj then j, pj = k, p else break end
+    end
+    local s = pj - ad[i]
     if s > best then
       best, bi = s, i
       if s >= 0 then return s, i end
