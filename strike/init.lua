@@ -115,6 +115,22 @@ function S.triking(collider1, collider2, out)
     single1[1], single2[1] = nil, nil
     return false
   end
+  if n1 == 1 and n2 == 1 then
+    -- One shape each, the common case: straight-line code (LuaJIT traces one-trip loops
+    -- badly), tested into the caller's `out` when there is one.
+    local a, b = l1[1], l2[1]
+    single1[1], single2[1] = nil, nil
+    if a._dirty then a:_refresh() end
+    if b._dirty then b:_refresh() end
+    if not (a._minx < b._maxx and b._minx < a._maxx and a._miny < b._maxy and b._miny < a._maxy) then
+      return false
+    end
+    local m = dispatch[a.kind][b.kind](a, b, out or tmpA)
+    if not (m.depth > 0) then return false end -- luacheck: ignore 581 (NaN reads as no collision)
+    if not out then out = MTV.set(MTV(), m) end
+    out.collider, out.collided = r1, r2
+    return out
+  end
   -- Test into `tmp`; a deeper result becomes `best` and the other buffer becomes `tmp`.
   -- With an `out` table it is one of the two buffers, so the usual single hit needs no copy.
   local best, tmp, found = tmpA, out or tmpB, false
