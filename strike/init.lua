@@ -16,6 +16,7 @@ local dispatch = require(ROOT .. '.collide.dispatch')
 local check = require(ROOT .. '.check')
 
 local describe, fail = check.describe, check.fail
+local min, max = math.min, math.max
 
 ---@class strike
 local S = {
@@ -143,7 +144,8 @@ function S.triking(collider1, collider2, out)
     for j = 1, n2 do
       local b = l2[j]
       if b._dirty then b:_refresh() end
-      if ax0 < b._maxx and b._minx < ax1 and ay0 < b._maxy and b._miny < ay1 then
+      -- (bounds overlap, as two tests instead of four: fewer trace exits under LuaJIT)
+      if min(ax1, b._maxx) > max(ax0, b._minx) and min(ay1, b._maxy) > max(ay0, b._miny) then
         row[b.kind](a, b, tmp)
         local d = tmp.depth
         if d > bestDepth then -- (false for NaN and for separating results)

@@ -17,10 +17,10 @@ local sqrt = math.sqrt
 ---@field ny number unit normal, y
 ---@field depth number penetration depth, > 0 when colliding; when separating, minus the gap (<= 0)
 ---@field separating boolean true when the shapes do not collide (touching is not colliding)
----@field collider table outermost collider of the first argument (the shape itself if it has none)
----@field collided table outermost collider of the second argument
----@field colliderShape strike.Shape the leaf shape of the first argument
----@field collidedShape strike.Shape the leaf shape of the second argument
+---@field collider table|false outermost collider of the first argument (the shape itself if it has none)
+---@field collided table|false outermost collider of the second argument
+---@field colliderShape strike.Shape|false the leaf shape of the first argument (false in a blank MTV)
+---@field collidedShape strike.Shape|false the leaf shape of the second argument
 ---@field edgeIndex integer i > 0: edge i of colliderShape gave the axis; -j: edge j of collidedShape
 --- did; 0: the axis came from a circle (centre to centre, or centre to a vertex)
 local MTV = Object:extend()
@@ -33,14 +33,17 @@ MTV.name = 'MTV'
 function MTV:new(dx, dy, colliderShape, collidedShape, separating)
   dx = check.optNumber(dx, 'strike.MTV', 'dx', 0)
   dy = check.optNumber(dy, 'strike.MTV', 'dy', 0)
-  self.x, self.y = dx, dy
   local l = sqrt(dx * dx + dy * dy)
-  if l > 0 then self.nx, self.ny = dx / l, dy / l else self.nx, self.ny = 0, 0 end
-  self.separating = separating and true or false
-  self.depth = self.separating and -l or l
-  self.colliderShape, self.collidedShape = colliderShape, collidedShape
-  self.collider, self.collided = colliderShape, collidedShape
+  separating = separating and true or false
+  -- Every field is set, always in this order (false for a missing shape), so that every
+  -- MTV has the same table layout: LuaJIT then compiles one trace for all of them.
+  self.x, self.y = dx, dy
+  self.nx, self.ny = l > 0 and dx / l or 0, l > 0 and dy / l or 0
+  self.depth = separating and -l or l
+  self.separating = separating
   self.edgeIndex = 0
+  self.colliderShape, self.collidedShape = colliderShape or false, collidedShape or false
+  self.collider, self.collided = colliderShape or false, collidedShape or false
 end
 
 --- Length of the vector.

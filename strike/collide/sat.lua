@@ -14,7 +14,7 @@
 --- Touching (depth exactly 0) is not a collision.
 local sat = {}
 
-local sqrt, huge = math.sqrt, math.huge
+local sqrt, huge, abs = math.sqrt, math.huge, math.abs
 
 -- The outermost collider of a shape, or the shape itself.
 local function root(s)
@@ -28,7 +28,7 @@ sat.root = root
 -- Fill `out`. (nx, ny) is the unit normal from a to b, depth > 0 means overlap. The
 -- callers (S.AT, S.triking) set out.collider and out.collided.
 local function result(out, a, b, nx, ny, depth, edge)
-  local m = depth > 0 and depth or -depth
+  local m = abs(depth)
   out.x, out.y, out.nx, out.ny, out.depth = nx * m, ny * m, nx, ny, depth
   out.separating = not (depth > 0) -- luacheck: ignore 581 (NaN depth must read as separating)
   out.edgeIndex = edge
@@ -50,7 +50,7 @@ sat.result = result
 -- walk stops exactly there. The whole pass costs O(n + m) instead of O(n * m).
 -- An Edge's two faces point opposite ways: a half turn, after which the old support is
 -- the new maximum, so each of them gets a full scan instead.
-local function maxSeparation(A, B)
+local function maxSeparationWalk(A, B)
   local anx, any, ad = A._wnx, A._wny, A._wd
   local bx, by, nb = B._wx, B._wy, B._n
   local best, bi, j = -huge, 1, 1
@@ -85,10 +85,44 @@ local function maxSeparation(A, B)
   end
   return best, bi
 end
+-- The same by a full scan, O(n * m), with a branch-free inner loop (math.min compiles to
+-- one instruction). Under LuaJIT this is the better choice: the walk's data-dependent
+-- loop exits make the trace compiler grow a side trace for every path taken (measured on
+-- 500 poly-poly pairs: 205 KB of machine code in 215 traces for the walk, against 37 KB in
+-- 28 traces here, out of LuaJIT's default 512 KB area that the whole game shares), while
+-- an interpreter pays for every call to math.min and prefers the walk (Lua 5.4, 8-gons:
+-- 308k against 164k pairs/s).
+local min = math.min
+local function maxSeparationScan(A, B)
+  local anx, any, ad = A._wnx, A._wny, A._wd
+  local bx, by, nb = B._wx, B._wy, B._n
+  local best, bi = -huge, 1
+  for i = 1, A._n do
+    local nx, ny = anx[i], any[i]
+    local s = huge
+    for j = 1, nb do
+      s = min(s, nx * bx[j] + ny * by[j])
+    end
+    s = s - ad[i]
+    if s > best then
+      best, bi = s, i
+      if s >= 0 then return s, i end
+    end
+  end
+  return best, bi
+end
+
+local maxSeparation = rawget(_G, 'jit') and maxSeparationScan or maxSeparationWalk
 --- maxSeparation(A, B): over A's faces, the largest of the smallest signed distance of B's
 --- vertices in front of the face (>= 0: that face separates them), and that face's index.
+--- It stops at the first separating face. The variant in use suits the VM; both are here
+--- for the specs.
 ---@type fun(A: strike.VertexShape, B: strike.VertexShape): number, integer
 sat.maxSeparation = maxSeparation
+--- The walking variant (interpreters).
+sat.maxSeparationWalk = maxSeparationWalk
+--- The scanning variant (LuaJIT).
+sat.maxSeparationScan = maxSeparationScan
 
 --- Polygon (or edge) A against polygon (or edge) B.
 ---@param A strike.VertexShape @param B strike.VertexShape @param out table an MTV-shaped table
