@@ -73,6 +73,12 @@ describe('allocation', function()
     nothingPerCall(kbPer(function() S.triking(c1, far, out) end, 10000), 'S.triking, apart')
   end)
 
+  it('S.ite with an out table allocates nothing', function()
+    local floor, box, ball = H.Rectangle(0, 5, 100, 10), H.Rectangle(0, -4.5, 4, 10, 0.1), H.Circle(3, -4, 5)
+    local m1, m2, contacts = S.AT(floor, box), S.AT(floor, ball), {}
+    nothingPerCall(kbPer(function() S.ite(m1, contacts) S.ite(m2, contacts) end, 10000), 'S.ite')
+  end)
+
   it('transforms, bounds and elems allocate nothing', function()
     local c = T.Collider(H.Rectangle(0, 0, 10), H.Circle(8, 0, 3))
     nothingPerCall(kbPer(function()

@@ -161,10 +161,35 @@ function S.triking(collider1, collider2, out)
   return out
 end
 
+local contact = require(ROOT .. '.collide.contact')
+
 local function checkMTV(fname, mtv)
   if type(mtv) ~= 'table' or type(mtv.x) ~= 'number' or type(mtv.y) ~= 'number' then
     fail(('%s: argument 1 must be an MTV, got %s'):format(fname, describe(mtv)))
   end
+end
+
+--- Contact points of a collision (see "Contacts" in the README): a list of 1 or 2 points
+--- `{x =, y =, depth =, id =}` with `count` and the normal `nx, ny` (the MTV's direction),
+--- or nil for a separating MTV. Each point lies midway between the two surfaces; `id`
+--- names the features that touch and stays the same while they do. With `out`, its
+--- tables are reused and nothing is allocated once it has held two points.
+---@param mtv strike.MTV @param out table|nil
+---@return table|nil contacts
+function S.ite(mtv, out)
+  checkMTV('strike.ite', mtv)
+  if out ~= nil and type(out) ~= 'table' then checkOut('strike.ite', out, 2) end
+  if mtv.separating then return nil end
+  local a, b = mtv.colliderShape, mtv.collidedShape
+  if type(a) ~= 'table' or not dispatch[a.kind] or type(b) ~= 'table' or not dispatch[b.kind] then
+    fail('strike.ite: the MTV must come from S.AT or S.triking (its colliderShape and collidedShape are not shapes)')
+  end
+  out = out or {}
+  local k = contact.manifold(mtv, out)
+  if k == 0 then return nil end
+  if k == 1 and out[2] then out._spare, out[2] = out[2], nil end
+  out.count, out.nx, out.ny = k, mtv.nx, mtv.ny
+  return out
 end
 
 --- Resolve a collision by moving both sides half way: mtv.collider by -mtv / 2 and

@@ -1,0 +1,151 @@
+--- Contact manifolds: where two colliding convex shapes touch, from their MTV.
+---
+--- Polygons (and edges) use reference-face clipping (Catto, "Contact Manifolds", GDC 2007;
+--- the same scheme as Box2D's b2ClipPolygons and dyn4j's clipping solver): the reference
+--- face is the face, of either shape, most closely aligned with the contact normal (the
+--- first shape's wins unless the second's is better by 1e-6 in cosine, so that resting
+--- contacts do not flip between frames); the incident face is the other shape's face most
+--- opposed to it; the incident face is clipped to the reference face's side planes and
+--- the points behind the reference face are kept. Circles give one point.
+---
+--- Every point lies midway between the two surfaces: half its depth in front of the
+--- incident feature, half behind the reference one. Its id names the features that made
+--- it, so it stays the same while the same features touch:
+---   id = ((side * 65536 + referenceFace) * 65536 + incidentFace) * 4 + corner
+--- side 0 when the reference face is the first shape's, 1 when the second's; corner 0 or 1
+--- for an incident vertex kept as it is, 2 or 3 for a point cut by the reference face's
+--- first or second side plane. A circle's point has id = 2 * face (centre over that face of
+--- the polygon) or 2 * vertex + 1 (over that vertex), and 0 for two circles.
+local contact = {}
+
+local sqrt, huge = math.sqrt, math.huge
+
+-- Write point k of `out`, reusing its table (a second point's table is kept in
+-- out._spare while the manifold has one point, so that #out is always the count).
+local function setPoint(out, k, x, y, depth, id)
+  local p = out[k] or (k == 2 and out._spare)
+  if not p then p = { x = 0, y = 0, depth = 0, id = 0 } end
+  out[k] = p
+  p.x, p.y, p.depth, p.id = x, y, depth, id
+end
+
+-- The face of polygon P whose normal is most aligned with (nx, ny), and that cosine.
+local function alignedFace(P, nx, ny)
+  local wnx, wny = P._wnx, P._wny
+  local best, bi = -huge, 1
+  for i = 1, P._n do
+    local d = wnx[i] * nx + wny[i] * ny
+    if d > best then best, bi = d, i end
+  end
+  return bi, best
+end
+
+-- Clip and keep, with R the reference polygon (face r) and I the incident one (face f).
+-- Returns the number of points written. `side` is 0 or 1 (see the header).
+local function clipFaces(out, R, r, I, f, side)
+  local rn = R._n
+  local r2 = r < rn and r + 1 or 1
+  local v1x, v1y, v2x, v2y = R._wx[r], R._wy[r], R._wx[r2], R._wy[r2]
+  local nx, ny = R._wnx[r], R._wny[r]
+  local tx, ty = v2x - v1x, v2y - v1y
+  local len = sqrt(tx * tx + ty * ty)
+  tx, ty = tx / len, ty / len
+  local in_ = I._n
+  local f2 = f < in_ and f + 1 or 1
+  local ax, ay, bx, by = I._wx[f], I._wy[f], I._wx[f2], I._wy[f2]
+  local ca, cb = 0, 1 -- which corner each end is (see the header)
+  -- side plane 1: dot(t, p - v1) >= 0
+  local lo = tx * v1x + ty * v1y
+  local da, db = tx * ax + ty * ay - lo, tx * bx + ty * by - lo
+  if da < 0 and db < 0 then return 0 end
+  if da < 0 then
+    local s = da / (da - db)
+    ax, ay, ca = ax + s * (bx - ax), ay + s * (by - ay), 2
+  elseif db < 0 then
+    local s = db / (db - da)
+    bx, by, cb = bx + s * (ax - bx), by + s * (ay - by), 2
+  end
+  -- side plane 2: dot(t, p - v2) <= 0
+  local hi = tx * v2x + ty * v2y
+  da, db = hi - (tx * ax + ty * ay), hi - (tx * bx + ty * by)
+  if da < 0 and db < 0 then return 0 end
+  if da < 0 then
+    local s = da / (da - db)
+    ax, ay, ca = ax + s * (bx - ax), ay + s * (by - ay), 3
+  elseif db < 0 then
+    local s = db / (db - da)
+    bx, by, cb = bx + s * (ax - bx), by + s * (ay - by), 3
+  end
+  -- keep what is behind the reference face
+  local off = nx * v1x + ny * v1y
+  local base = ((side * 65536 + r) * 65536 + f) * 4
+  local k = 0
+  local sa = nx * ax + ny * ay - off
+  if sa < 0 then
+    k = k + 1
+    setPoint(out, k, ax - nx * sa / 2, ay - ny * sa / 2, -sa, base + ca)
+  end
+  local sb = nx * bx + ny * by - off
+  if sb < 0 then
+    k = k + 1
+    setPoint(out, k, bx - nx * sb / 2, by - ny * sb / 2, -sb, base + cb)
+  end
+  return k
+end
+
+-- The feature of polygon P nearest the point (cx, cy) as an id: 2 * face or 2 * vertex + 1.
+local function circleFeature(P, cx, cy)
+  local n, wx, wy, wnx, wny = P._n, P._wx, P._wy, P._wnx, P._wny
+  local best, bi = -huge, 1
+  for i = 1, n do
+    local s = wnx[i] * (cx - wx[i]) + wny[i] * (cy - wy[i])
+    if s > best then best, bi = s, i end
+  end
+  local j = bi < n and bi + 1 or 1
+  if (cx - wx[bi]) * (wx[j] - wx[bi]) + (cy - wy[bi]) * (wy[j] - wy[bi]) <= 0 then return 2 * bi + 1 end
+  if (cx - wx[j]) * (wx[bi] - wx[j]) + (cy - wy[j]) * (wy[bi] - wy[j]) <= 0 then return 2 * j + 1 end
+  return 2 * bi
+end
+
+--- Fill `out` with the contact points of a colliding MTV (see the header), and return
+--- the count (0 for a separating MTV).
+---@param mtv strike.MTV @param out table
+---@return integer
+function contact.manifold(mtv, out)
+  if mtv.separating or not (mtv.depth > 0) then return 0 end -- luacheck: ignore 581
+  local A, B = mtv.colliderShape, mtv.collidedShape
+  local nx, ny, depth = mtv.nx, mtv.ny, mtv.depth
+  if A._dirty then A:_refresh() end
+  if B._dirty then B:_refresh() end
+  if A.kind == 'circle' then
+    local r = A._r * A._scale
+    local id = B.kind == 'circle' and 0 or circleFeature(B, A._x, A._y)
+    setPoint(out, 1, A._x + nx * (r - depth / 2), A._y + ny * (r - depth / 2), depth, id)
+    return 1
+  elseif B.kind == 'circle' then
+    local r = B._r * B._scale
+    setPoint(out, 1, B._x - nx * (r - depth / 2), B._y - ny * (r - depth / 2), depth, circleFeature(A, B._x, B._y))
+    return 1
+  end
+  local fa, alignA = alignedFace(A, nx, ny)
+  local fb, alignB = alignedFace(B, -nx, -ny)
+  local k
+  if alignB > alignA + 1e-6 then
+    k = clipFaces(out, B, fb, A, (alignedFace(A, -B._wnx[fb], -B._wny[fb])), 1)
+  else
+    k = clipFaces(out, A, fa, B, (alignedFace(B, -A._wnx[fa], -A._wny[fa])), 0)
+  end
+  if k == 0 then
+    -- Round-off left nothing behind the face: report the deepest vertex of B.
+    local best, bj = huge, 1
+    for j = 1, B._n do
+      local p = nx * B._wx[j] + ny * B._wy[j]
+      if p < best then best, bj = p, j end
+    end
+    setPoint(out, 1, B._wx[bj] + nx * depth / 2, B._wy[bj] + ny * depth / 2, depth, bj)
+    k = 1
+  end
+  return k
+end
+
+return contact
