@@ -123,8 +123,8 @@ function S.triking(collider1, collider2, out)
     single1[1], single2[1] = nil, nil
     if a._dirty then a:_refresh() end
     if b._dirty then b:_refresh() end
-    if not (a._minx < b._maxx and b._minx < a._maxx and a._miny < b._maxy and b._miny < a._maxy) then
-      return false
+    if min(a._maxx, b._maxx) < max(a._minx, b._minx) or min(a._maxy, b._maxy) < max(a._miny, b._miny) then
+      return false -- the bounds do not even meet
     end
     local m = dispatch[a.kind][b.kind](a, b, out or tmpA)
     if not (m.depth > 0) then return false end -- luacheck: ignore 581 (NaN reads as no collision)
@@ -144,8 +144,10 @@ function S.triking(collider1, collider2, out)
     for j = 1, n2 do
       local b = l2[j]
       if b._dirty then b:_refresh() end
-      -- (bounds overlap, as two tests instead of four: fewer trace exits under LuaJIT)
-      if min(ax1, b._maxx) > max(ax0, b._minx) and min(ay1, b._maxy) > max(ay0, b._miny) then
+      -- Bounds meet (closed intervals: an axis-aligned edge or a point has a flat box;
+      -- the narrow phase decides touching), as two tests instead of four: fewer trace
+      -- exits under LuaJIT.
+      if min(ax1, b._maxx) >= max(ax0, b._minx) and min(ay1, b._maxy) >= max(ay0, b._miny) then
         row[b.kind](a, b, tmp)
         local d = tmp.depth
         if d > bestDepth then -- (false for NaN and for separating results)
