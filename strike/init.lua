@@ -30,7 +30,7 @@ S.hapes, S.trikers = registry.new()
 S.MTV = MTV
 
 -- Built-in classes, registered eagerly so that pairs(S.hapes) lists them.
-for _, name in ipairs({ 'ConvexPolygon', 'Circle', 'Edge', 'Ellipse', 'Rectangle', 'RegularPolygon' }) do
+for _, name in ipairs({ 'ConvexPolygon', 'Circle', 'Edge', 'Ellipse', 'Rectangle', 'RegularPolygon', 'Point' }) do
   S.hapes[name] = require(ROOT .. '.shapes.' .. name)
   local _ = S.trikers[name]
 end

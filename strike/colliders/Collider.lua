@@ -154,13 +154,14 @@ Collider._refreshLeaves = refreshLeaves
 local function refreshMass(self)
   if not self._leavesOK then refreshLeaves(self) end
   local shapes = self.shapes or {}
-  local area, ax, ay, len, lx, ly = 0, 0, 0, 0, 0, 0
+  local area, ax, ay, len, lx, ly, cnt, sx, sy = 0, 0, 0, 0, 0, 0, 0, 0, 0
   for i = 1, #shapes do
     local c = shapes[i]
     if c.shapes then
       if not c._massOK then refreshMass(c) end
       area, ax, ay = area + c._area, ax + c._ax, ay + c._ay
       len, lx, ly = len + c._len, lx + c._lx, ly + c._ly
+      cnt, sx, sy = cnt + c._cnt, sx + c._sx, sy + c._sy
     else
       local a = c:getArea()
       if a > 0 then
@@ -169,13 +170,17 @@ local function refreshMass(self)
         local l = 2 * c:getRadius()
         len, lx, ly = len + l, lx + l * c._x, ly + l * c._y
       end
+      cnt, sx, sy = cnt + 1, sx + c._x, sy + c._y
     end
   end
   self._area, self._ax, self._ay, self._len, self._lx, self._ly = area, ax, ay, len, lx, ly
+  self._cnt, self._sx, self._sy = cnt, sx, sy
   if area > 0 then
     self._cx, self._cy = ax / area, ay / area
   elseif len > 0 then
     self._cx, self._cy = lx / len, ly / len
+  elseif cnt > 0 then
+    self._cx, self._cy = sx / cnt, sy / cnt
   else
     self._cx, self._cy = 0, 0
   end
@@ -229,7 +234,8 @@ function Collider:getArea()
 end
 
 --- Centroid: the area-weighted mean of the leaves' centroids; for colliders of edges
---- only, the length-weighted mean of their midpoints; (0, 0) when empty.
+--- only, the length-weighted mean of their midpoints; of points only, their mean; (0, 0)
+--- when empty.
 ---@return number x, number y
 function Collider:getCentroid()
   if not self._massOK then refreshMass(self) end

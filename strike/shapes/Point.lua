@@ -1,0 +1,27 @@
+--- A point: a circle of radius 0, so it works wherever a shape does. A point strictly
+--- inside a shape collides with it, and its MTV pushes it out to the nearest boundary; a
+--- point never collides with another point or with an edge (neither has an inside).
+local ROOT = (...):match('^(.-)%.shapes%.[^%.]+$')
+local Circle = require(ROOT .. '.shapes.Circle')
+local check = require(ROOT .. '.check')
+
+---@class strike.Point : strike.Circle
+local Point = Circle:extend()
+Point.name = 'Point'
+
+--- A point at (x, y).
+---@param x number @param y number
+function Point:new(x, y)
+  check.number(x, 'strike.Point', 'x')
+  check.number(y, 'strike.Point', 'y')
+  self._r, self._area, self._radius = 0, 0, 0
+  self:_setPose(x, y)
+end
+
+--- Arguments that rebuild the point as it is now: x, y.
+---@return number, number
+function Point:unpack()
+  return self._x, self._y
+end
+
+return Point
