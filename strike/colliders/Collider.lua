@@ -506,4 +506,54 @@ function Collider:consolidate()
   return self
 end
 
+-- Rays (strike/collide/ray.lua holds the algorithms) ------------------------------------
+
+local ray = require(ROOT .. '.collide.ray')
+local checkRay, checkSegment, checkMax = ray.checkRay, ray.checkSegment, ray.checkMax
+local leavesIntersections, leavesIntersect, leavesRayCast, leavesSegmentCast = ray.leavesIntersections,
+  ray.leavesIntersect, ray.leavesRayCast, ray.leavesSegmentCast
+
+--- The hits of the ray from (x, y) along (dx, dy) on every leaf shape it hits: a new table
+--- `{ [shape] = { t1, t2 } }` (`{ t1 }` for a single hit), each list as
+--- shape:rayIntersections gives it; nil when no leaf is hit.
+---@param x number @param y number @param dx number @param dy number
+---@return table<strike.Shape, number[]>|nil
+function Collider:rayIntersections(x, y, dx, dy)
+  checkRay('strike.Collider:rayIntersections', x, y, dx, dy)
+  if not self._leavesOK then refreshLeaves(self) end
+  return leavesIntersections(self._leaves, self._nleaves, x, y, dx, dy)
+end
+
+--- True when the ray from (x, y) along (dx, dy) hits some leaf shape. Allocates nothing.
+---@param x number @param y number @param dx number @param dy number
+---@return boolean
+function Collider:rayIntersects(x, y, dx, dy)
+  checkRay('strike.Collider:rayIntersects', x, y, dx, dy)
+  if not self._leavesOK then refreshLeaves(self) end
+  return leavesIntersect(self._leaves, self._nleaves, x, y, dx, dy)
+end
+
+--- The first boundary point of any leaf along the ray from (x, y) along (dx, dy), at a
+--- distance of at most maxDistance (default math.huge): distance, hit point, outward unit
+--- normal and the leaf shape hit (on ties, the first in elems() order); nil when none.
+--- Allocates nothing.
+---@param x number @param y number @param dx number @param dy number @param maxDistance number|nil
+---@return number|nil distance, number x, number y, number nx, number ny, strike.Shape shape
+function Collider:rayCast(x, y, dx, dy, maxDistance)
+  checkRay('strike.Collider:rayCast', x, y, dx, dy)
+  maxDistance = checkMax('strike.Collider:rayCast', maxDistance)
+  if not self._leavesOK then refreshLeaves(self) end
+  return leavesRayCast(self._leaves, self._nleaves, x, y, dx, dy, maxDistance)
+end
+
+--- rayCast along the segment from (x1, y1) to (x2, y2): distance from (x1, y1), hit point,
+--- normal and leaf shape of the first hit; nil when there is none or p1 == p2.
+---@param x1 number @param y1 number @param x2 number @param y2 number
+---@return number|nil distance, number x, number y, number nx, number ny, strike.Shape shape
+function Collider:segmentCast(x1, y1, x2, y2)
+  checkSegment('strike.Collider:segmentCast', x1, y1, x2, y2)
+  if not self._leavesOK then refreshLeaves(self) end
+  return leavesSegmentCast(self._leaves, self._nleaves, x1, y1, x2, y2)
+end
+
 return Collider

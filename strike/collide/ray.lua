@@ -1,0 +1,404 @@
+--- Ray queries: pure functions on shapes (and on leaf lists of colliders). The shape
+--- methods rayIntersections, rayIntersects, rayCast and segmentCast validate their
+--- arguments and call these.
+---
+--- A ray is an origin (ox, oy) and a direction, normalised here: every distance t is
+--- measured along the unit direction (ux, uy), and only t >= 0 counts (nothing behind the
+--- origin). The points of a ray inside a closed convex shape form one interval [lo, hi] of
+--- t; the ray's hits are its ends clipped to t >= 0:
+---   lo >= 0, lo < hi   two hits, lo then hi (a ray starting on the boundary and entering
+---                      has lo = 0);
+---   lo >= 0, lo == hi  one hit (a graze at a vertex or a tangent);
+---   lo < 0 <= hi       one hit, hi: the ray starts inside and only its exit is reported
+---                      (a ray starting on the boundary and leaving reports just 0);
+---   hi < 0, or empty   no hit.
+---
+--- Polygons: parametric clipping against the face half-planes, M. Cyrus and J. Beck,
+--- "Generalized two- and three-dimensional clipping", Computers & Graphics 3(1), 1978.
+--- Face i keeps the points p with dot(n_i, p) <= d_i (world normal and offset, cached by
+--- the shape); along the ray that is t * dot(n_i, u) <= d_i - dot(n_i, o). A face the
+--- ray runs parallel to either keeps the whole ray or none of it, so an edge parallel to
+--- the ray needs no special case: the neighbouring faces bound the interval.
+--- Segments (Edge): a degenerate polygon, intersected directly: the ray's parameter and
+--- the segment's from the two cross products; a collinear ray gives the overlap interval.
+--- Circles: C. Ericson, Real-Time Collision Detection (2005), 5.3.2 (intersecting a ray
+--- against a sphere), t^2 + 2bt + c = 0 with b = dot(m, u), c = dot(m, m) - r^2 and
+--- m = o - centre, solved in the numerically stable form: the discriminant is taken as
+--- r^2 - |m - b u|^2 (the squared distance from the centre to the line, which avoids the
+--- cancellation in b^2 - c), and the roots as q = -(b + sign(b) sqrt(disc)) and c / q.
+local ROOT = (...):match('^(.-)%.collide%.[^%.]+$')
+local check = require(ROOT .. '.check')
+
+local sqrt, abs, huge = math.sqrt, math.abs, math.huge
+local finite, fail, describe, number = check.finite, check.fail, check.describe, check.number
+
+local ray = {}
+
+-- Validation ------------------------------------------------------------------------
+
+--- Raise an error at the caller's line unless x, y, dx, dy are finite numbers and
+--- (dx, dy) is not the zero vector. `fname` names the public function.
+---@param fname string @param x any @param y any @param dx any @param dy any
+function ray.checkRay(fname, x, y, dx, dy)
+  if not (finite(x) and finite(y) and finite(dx) and finite(dy)) then
+    number(x, fname, 'x')
+    number(y, fname, 'y')
+    number(dx, fname, 'dx')
+    number(dy, fname, 'dy')
+  end
+  if dx == 0 and dy == 0 then fail(fname .. ': the direction must not be zero') end
+end
+
+--- Raise an error at the caller's line unless x1, y1, x2, y2 are finite numbers.
+---@param fname string @param x1 any @param y1 any @param x2 any @param y2 any
+function ray.checkSegment(fname, x1, y1, x2, y2)
+  if not (finite(x1) and finite(y1) and finite(x2) and finite(y2)) then
+    number(x1, fname, 'x1')
+    number(y1, fname, 'y1')
+    number(x2, fname, 'x2')
+    number(y2, fname, 'y2')
+  end
+end
+
+--- The maximum distance of a cast: nil means math.huge; anything but a number >= 0
+--- (math.huge allowed, NaN not) raises an error at the caller's line.
+---@param fname string @param maxDistance any
+---@return number
+function ray.checkMax(fname, maxDistance)
+  if maxDistance == nil then return huge end
+  if type(maxDistance) ~= 'number' or not (maxDistance >= 0) then -- luacheck: ignore 581 (NaN is rejected)
+    fail(('%s: maxDistance must be a number >= 0 or nil, got %s'):format(fname, describe(maxDistance)))
+  end
+  return maxDistance
+end
+
+--- Raise an error at the caller's line unless `ts` is a table or nil.
+---@param fname string @param ts any
+function ray.checkTs(fname, ts)
+  if ts ~= nil and type(ts) ~= 'table' then
+    fail(('%s: ts must be a table or nil, got %s'):format(fname, describe(ts)))
+  end
+end
+
+-- Geometry ---------------------------------------------------------------------------
+
+--- The unit vector along (dx, dy) (not the zero vector) and the length of (dx, dy).
+--- Scaled by the larger component first, so that neither overflow nor underflow can
+--- spoil the result; the length may be math.huge for vectors longer than that.
+---@param dx number @param dy number
+---@return number ux, number uy, number length
+function ray.unit(dx, dy)
+  local m, ay = abs(dx), abs(dy)
+  if ay > m then m = ay end
+  local x, y = dx / m, dy / m
+  local l = sqrt(x * x + y * y)
+  return x / l, y / l, m * l
+end
+local unit = ray.unit
+
+--- Cyrus–Beck clipping of the ray (origin (ox, oy), unit direction (ux, uy)) against a
+--- convex polygon (3 or more vertices). Returns the interval lo, hi of the whole line
+--- inside the polygon (lo may be negative; hi >= 0) and the faces that bound it: fin the
+--- entering face that gives lo, fout the leaving face that gives hi (on ties, the first
+--- face in order). Returns nil when the ray misses.
+---@param s strike.VertexShape @param ox number @param oy number @param ux number @param uy number
+---@return number|nil lo, number hi, integer fin, integer fout
+function ray.polygon(s, ox, oy, ux, uy)
+  if s._dirty then s:_refresh() end
+  local wnx, wny, wd = s._wnx, s._wny, s._wd
+  local tin, tout, fin, fout = -huge, huge, 0, 0
+  for i = 1, s._n do
+    local nx, ny = wnx[i], wny[i]
+    local den = nx * ux + ny * uy
+    local num = wd[i] - (nx * ox + ny * oy)
+    if den < 0 then -- entering: t >= num / den
+      local t = num / den
+      if t > tin then
+        if t > tout then return nil end
+        tin, fin = t, i
+      end
+    elseif den > 0 then -- leaving: t <= num / den
+      local t = num / den
+      if t < tout then
+        if t < tin then return nil end
+        tout, fout = t, i
+      end
+    elseif num < 0 then -- parallel to the face and outside it
+      return nil
+    end
+  end
+  -- (behind the origin; the other two tests only fail for coordinates near overflow)
+  if not (tout >= 0) or tout == huge or tin == huge then return nil end -- luacheck: ignore 581 (NaN reads as a miss)
+  return tin, tout, fin, fout
+end
+local polygonClip = ray.polygon
+
+--- The ray against a segment (an Edge, 2 vertices). Returns lo, hi (lo <= hi, hi >= 0)
+--- and cross(u, p2 - p1) (with p2 - p1 scaled; only its sign matters): not 0 for a
+--- crossing (then lo == hi), 0 for a collinear ray (lo, hi: the overlap's ends along the
+--- ray). Returns nil when the ray misses.
+---@param s strike.VertexShape @param ox number @param oy number @param ux number @param uy number
+---@return number|nil lo, number hi, number cross
+function ray.segment(s, ox, oy, ux, uy)
+  if s._dirty then s:_refresh() end
+  local wx, wy = s._wx, s._wy
+  local ax, ay = wx[1] - ox, wy[1] - oy -- p1 relative to the origin
+  local ex, ey = wx[2] - wx[1], wy[2] - wy[1]
+  -- o + t u = p1 + s e: t = cross(a, e) / cross(u, e), s = cross(a, u) / cross(u, e).
+  -- (e is scaled to components of at most 1, so that cross(a, e) cannot overflow.)
+  local k = abs(ex)
+  if abs(ey) > k then k = abs(ey) end
+  ex, ey = ex / k, ey / k
+  local den = ux * ey - uy * ex
+  local cau = ax * uy - ay * ux
+  if den ~= 0 then
+    local sp = cau / (den * k)
+    if not (sp >= 0 and sp <= 1) then return nil end
+    local t = (ax * ey - ay * ex) / den
+    if not (t >= 0) or t == huge then return nil end -- luacheck: ignore 581 (NaN reads as a miss)
+    return t, t, den
+  end
+  if cau ~= 0 then return nil end -- parallel, on another line
+  local t1 = ax * ux + ay * uy
+  local t2 = (wx[2] - ox) * ux + (wy[2] - oy) * uy
+  if t1 > t2 then t1, t2 = t2, t1 end
+  if not (t2 >= 0) or t2 == huge then return nil end -- luacheck: ignore 581 (NaN reads as a miss)
+  return t1, t2, 0
+end
+local segmentClip = ray.segment
+
+--- The ray against a circle: lo, hi (lo <= hi, hi >= 0), or nil when the ray misses.
+---@param s strike.Circle @param ox number @param oy number @param ux number @param uy number
+---@return number|nil lo, number hi
+function ray.circle(s, ox, oy, ux, uy)
+  local r = s._r * s._scale
+  local mx, my = ox - s._x, oy - s._y
+  local b = mx * ux + my * uy
+  local c = (mx * mx + my * my) - r * r
+  if c > 0 and b > 0 then return nil end -- outside and pointing away
+  local px, py = mx - b * ux, my - b * uy -- from the centre to the nearest point of the line
+  local disc = r * r - (px * px + py * py)
+  if not (disc >= 0) then return nil end -- luacheck: ignore 581 (NaN reads as a miss)
+  local t1, t2
+  if disc == 0 then
+    t1 = -b
+    t2 = t1
+  else
+    local q
+    if b >= 0 then q = -(b + sqrt(disc)) else q = sqrt(disc) - b end
+    t1 = q
+    if c < huge then
+      t2 = c / q
+    else -- (|m|^2 overflowed: the origin is so far away that -b -+ sqrt(disc) cannot cancel)
+      t2 = -b - (q + b)
+    end
+    if t1 > t2 then t1, t2 = t2, t1 end
+  end
+  if not (t2 >= 0) or t2 == huge then return nil end -- luacheck: ignore 581 (NaN reads as a miss)
+  return t1, t2
+end
+local circleClip = ray.circle
+
+--- The interval lo, hi of the ray inside any shape (see ray.polygon), or nil.
+---@param s strike.Shape @param ox number @param oy number @param ux number @param uy number
+---@return number|nil lo, number hi
+function ray.clip(s, ox, oy, ux, uy)
+  if s.kind == 'circle' then return circleClip(s, ox, oy, ux, uy) end
+  if s._n == 2 then return segmentClip(s, ox, oy, ux, uy) end
+  return polygonClip(s, ox, oy, ux, uy)
+end
+local clip = ray.clip
+
+-- Fill `ts` (a table, or nil for a new one) with the hits of the ray, unit direction:
+-- ts, n; or nil, 0 (and `ts` emptied) when there is none.
+local function fill(s, ox, oy, ux, uy, ts)
+  local lo, hi = clip(s, ox, oy, ux, uy)
+  if not lo then
+    if ts then
+      for i = #ts, 1, -1 do ts[i] = nil end
+    end
+    return nil, 0
+  end
+  if hi == 0 then hi = 0.0 end -- (no negative zero)
+  ts = ts or {}
+  local n = 1
+  if lo >= 0 then
+    if lo == 0 then lo = 0.0 end
+    ts[1] = lo
+    if hi ~= lo then
+      ts[2] = hi
+      n = 2
+    end
+  else
+    ts[1] = hi
+  end
+  for i = #ts, n + 1, -1 do ts[i] = nil end
+  return ts, n
+end
+
+--- The hits of the ray from (x, y) along (dx, dy) (arguments valid) on shape `s`, as
+--- distances along the normalised direction, ascending: `ts` (filled from index 1, entries
+--- past n cleared; a new table when nil) and the count n (1 or 2); nil, 0 on a miss.
+---@param s strike.Shape @param x number @param y number @param dx number @param dy number
+---@param ts number[]|nil
+---@return number[]|nil ts, integer n
+function ray.intersections(s, x, y, dx, dy, ts)
+  local ux, uy = unit(dx, dy)
+  return fill(s, x, y, ux, uy, ts)
+end
+
+--- True when the ray hits the shape (arguments valid). Allocates nothing.
+---@param s strike.Shape @param x number @param y number @param dx number @param dy number
+---@return boolean
+function ray.intersects(s, x, y, dx, dy)
+  local ux, uy = unit(dx, dy)
+  return clip(s, x, y, ux, uy) ~= nil
+end
+
+--- The first hit at a distance of at most maxDistance along the ray from (ox, oy) with
+--- unit direction (ux, uy): distance, hit point, outward unit normal there; or nil.
+--- Polygons: the normal of the face that bounds the interval at that end (the entering
+--- face; the leaving one for a ray starting inside). Circles: (hit - centre) / r.
+--- Edges: the side facing the ray's origin; for a collinear ray, the segment's direction
+--- at that end (-u at the near end, +u at the far end for a ray starting on the segment).
+---@param s strike.Shape @param ox number @param oy number @param ux number @param uy number
+---@param maxDistance number
+---@return number|nil distance, number x, number y, number nx, number ny
+function ray.cast(s, ox, oy, ux, uy, maxDistance)
+  local t, nx, ny
+  if s.kind == 'circle' then
+    local lo, hi = circleClip(s, ox, oy, ux, uy)
+    if not lo then return nil end
+    if lo >= 0 then t = lo else t = hi end
+    if t > maxDistance then return nil end
+    local r = s._r * s._scale
+    nx, ny = (ox - s._x + t * ux) / r, (oy - s._y + t * uy) / r
+  elseif s._n == 2 then
+    local lo, hi, cross = segmentClip(s, ox, oy, ux, uy)
+    if not lo then return nil end
+    if lo >= 0 then t = lo else t = hi end
+    if t > maxDistance then return nil end
+    if cross > 0 then -- (the sign of cross(u, e) is the sign of dot(u, normal 1))
+      nx, ny = -s._wnx[1], -s._wny[1]
+    elseif cross < 0 then
+      nx, ny = s._wnx[1], s._wny[1]
+    elseif lo >= 0 then
+      nx, ny = -ux, -uy
+    else
+      nx, ny = ux, uy
+    end
+  else
+    local lo, hi, fin, fout = polygonClip(s, ox, oy, ux, uy)
+    if not lo then return nil end
+    local f
+    if lo >= 0 then t, f = lo, fin else t, f = hi, fout end
+    if t > maxDistance then return nil end
+    nx, ny = s._wnx[f], s._wny[f]
+  end
+  if t == 0 then t = 0.0 end
+  return t, ox + t * ux, oy + t * uy, nx, ny
+end
+local cast = ray.cast
+
+--- rayCast on one shape (arguments valid): see ray.cast; (dx, dy) need not be a unit vector.
+---@param s strike.Shape @param x number @param y number @param dx number @param dy number
+---@param maxDistance number
+---@return number|nil distance, number x, number y, number nx, number ny
+function ray.rayCast(s, x, y, dx, dy, maxDistance)
+  local ux, uy = unit(dx, dy)
+  return cast(s, x, y, ux, uy, maxDistance)
+end
+
+-- The unit direction and length of the segment p1 -> p2, or nil when p1 == p2.
+local function segmentRay(x1, y1, x2, y2)
+  local dx, dy = x2 - x1, y2 - y1
+  if dx == 0 and dy == 0 then return nil end
+  local k = 1
+  if dx - dx ~= 0 or dy - dy ~= 0 then -- the difference overflows: halve first
+    dx, dy, k = x2 * 0.5 - x1 * 0.5, y2 * 0.5 - y1 * 0.5, 2
+  end
+  local ux, uy, l = unit(dx, dy)
+  return ux, uy, l * k
+end
+
+--- segmentCast on one shape (arguments valid): the first hit of the segment from
+--- (x1, y1) to (x2, y2), as ray.cast with the segment's length as maxDistance; nil when
+--- p1 == p2.
+---@param s strike.Shape @param x1 number @param y1 number @param x2 number @param y2 number
+---@return number|nil distance, number x, number y, number nx, number ny
+function ray.segmentCast(s, x1, y1, x2, y2)
+  local ux, uy, l = segmentRay(x1, y1, x2, y2)
+  if not ux then return nil end
+  return cast(s, x1, y1, ux, uy, l)
+end
+
+-- Leaf lists (colliders) ---------------------------------------------------------------
+
+--- The hits on every leaf that is hit: a new table { [shape] = { t1, t2 } } (or { t1 }),
+--- or nil when no leaf is hit. Arguments valid.
+---@param leaves strike.Shape[] @param n integer @param x number @param y number @param dx number
+---@param dy number
+---@return table|nil
+function ray.leavesIntersections(leaves, n, x, y, dx, dy)
+  local ux, uy = unit(dx, dy)
+  local result
+  for i = 1, n do
+    local s = leaves[i]
+    local ts = fill(s, x, y, ux, uy, nil) -- (a new table only on a hit)
+    if ts then
+      result = result or {}
+      result[s] = ts
+    end
+  end
+  return result
+end
+
+--- True when the ray hits some leaf. Arguments valid; allocates nothing.
+---@param leaves strike.Shape[] @param n integer @param x number @param y number @param dx number
+---@param dy number
+---@return boolean
+function ray.leavesIntersect(leaves, n, x, y, dx, dy)
+  local ux, uy = unit(dx, dy)
+  for i = 1, n do
+    if clip(leaves[i], x, y, ux, uy) then return true end
+  end
+  return false
+end
+
+-- The first hit over the leaves (unit direction): ray.cast's values and the leaf; on ties
+-- the first leaf in order.
+local function leavesCast(leaves, n, ox, oy, ux, uy, maxDistance)
+  local bt, bx, by, bnx, bny, best
+  for i = 1, n do
+    local s = leaves[i]
+    local t, hx, hy, nx, ny = cast(s, ox, oy, ux, uy, maxDistance)
+    if t and (not best or t < bt) then
+      bt, bx, by, bnx, bny, best = t, hx, hy, nx, ny, s
+      maxDistance = t
+    end
+  end
+  if not best then return nil end
+  return bt, bx, by, bnx, bny, best
+end
+
+--- rayCast over a leaf list (arguments valid): distance, hit point, normal and the leaf
+--- hit first (ties: the first leaf in order), or nil.
+---@param leaves strike.Shape[] @param n integer @param x number @param y number @param dx number
+---@param dy number @param maxDistance number
+---@return number|nil distance, number x, number y, number nx, number ny, strike.Shape shape
+function ray.leavesRayCast(leaves, n, x, y, dx, dy, maxDistance)
+  local ux, uy = unit(dx, dy)
+  return leavesCast(leaves, n, x, y, ux, uy, maxDistance)
+end
+
+--- segmentCast over a leaf list (arguments valid); nil when p1 == p2.
+---@param leaves strike.Shape[] @param n integer @param x1 number @param y1 number @param x2 number
+---@param y2 number
+---@return number|nil distance, number x, number y, number nx, number ny, strike.Shape shape
+function ray.leavesSegmentCast(leaves, n, x1, y1, x2, y2)
+  local ux, uy, l = segmentRay(x1, y1, x2, y2)
+  if not ux then return nil end
+  return leavesCast(leaves, n, x1, y1, ux, uy, l)
+end
+
+return ray
