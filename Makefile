@@ -1,7 +1,7 @@
 # strike: make test runs luacheck and the busted suite under every Lua VM.
 VMS ?= lua5.1 lua5.2 lua5.3 lua5.4 luajit
 
-.PHONY: test deps lint spec copy-check
+.PHONY: test deps lint spec copy-check bench
 
 test: deps lint copy-check spec
 
@@ -20,3 +20,10 @@ spec:
 # The folder works wherever a game copies it.
 copy-check:
 	@bash tools/copy-check.sh $(VMS)
+
+# Benchmarks, not part of test: bench/run.lua under each of BENCH_VMS, tables printed and
+# saved to bench/results/<vm>.csv. STRIKE_PEERS=/path/to/peers adds the peers found there.
+BENCH_VMS ?= luajit lua5.4
+
+bench:
+	@BENCH_VMS="$(BENCH_VMS)" bash bench/bench.sh

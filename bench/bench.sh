@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# strike's benchmarks under several Lua VMs; not part of `make test`.
+#
+#   make bench                                     LuaJIT and Lua 5.4
+#   BENCH_VMS="lua5.1 luajit" make bench           other VMs (make bench BENCH_VMS=... too)
+#   STRIKE_PEERS=/path/to/peers make bench         also HC, Strike, slick, bump.lua, from
+#                                                  checkouts in that folder (never copied here)
+#   BENCH_ARGS="--pairs 2000" bash bench/bench.sh  extra options for bench/run.lua
+#
+# Runs `bench/run.lua --save` under each VM in turn (never in parallel, so that runs do not
+# share the CPUs), prints each VM's table and writes bench/results/<vm>.csv. Progress goes
+# to stderr. Fails when a VM is missing or its run fails; the other VMs still run.
+set -u
+cd "$(dirname "$0")/.." || exit 1
+if [ -n "${STRIKE_PEERS:-}" ]; then
+  # Absolute, since the runs start from the repository root.
+  STRIKE_PEERS=$(cd "$STRIKE_PEERS" 2>/dev/null && pwd) || { echo "STRIKE_PEERS: no such folder" >&2; exit 1; }
+  export STRIKE_PEERS
+fi
+mkdir -p bench/results
+status=0; ran=()
+start=$(date +%s)
+for vm in ${BENCH_VMS:-luajit lua5.4}; do
+  if ! command -v "$vm" >/dev/null 2>&1; then
+    echo "== $vm: NOT FOUND" >&2; status=1; continue
+  fi
+  echo "== bench under $vm ($("$vm" -v 2>&1 | head -n 1))"
+  t0=$(date +%s)
+  # shellcheck disable=SC2086 # BENCH_ARGS is a list of options
+  if "$vm" bench/run.lua --save ${BENCH_ARGS:-}; then
+    ran+=("$vm")
+    echo "== $vm: $(( $(date +%s) - t0 )) s"
+  else
+    echo "== $vm: FAILED" >&2; status=1
+  fi
+  echo
+done
+echo "== VMs run: ${ran[*]:-none}; $(( $(date +%s) - start )) s in all"
+exit $status

@@ -1,0 +1,236 @@
+--- Seeded benchmark workloads, identical on every VM. A workload is a list of pairs of
+--- plain shape descriptions (no library objects), so every adapter builds the same scene:
+---   { kind = 'rect', x =, y =, w =, h =, angle = }
+---   { kind = 'ngon', x =, y =, n =, r =, angle = }       regular n-gon, circumradius r
+---   { kind = 'circle', x =, y =, r = }
+---   { kind = 'edge', x1 =, y1 =, x2 =, y2 = }
+--- and compound bodies { kind = 'compound', parts = { desc, ... } }.
+--- Each pair is classified with the independent oracle of the property specs
+--- (spec/property/brute.lua), so that every workload holds exactly the requested share of
+--- overlapping pairs, and every pair's bounding boxes overlap (except in 'aabb': boxes
+--- whose bounds overlap always hit, so its misses have their bounds apart).
+---
+--- Pairs come from rejection sampling: candidates are drawn until one has the verdict
+--- wanted next (alternately a hit and a miss), overlapping bounds and no near-touching part
+--- pair. Most candidates are turned down, so before building shapes and asking the oracle,
+--- a candidate is checked against discs around each part (every point of a part lies within
+--- its circumradius of its centre; every point within its inradius is inside): when these
+--- already prove the verdict is the unwanted one, or that the bounding boxes are apart, it is
+--- dropped at once. That check only turns down candidates the oracle would turn down too, so
+--- the workload is exactly the one the oracle alone would give; every pair kept is still
+--- classified by the oracle.
+local S = require('strike')
+local PRNG = require('spec.helpers.prng')
+local brute = require('spec.property.brute')
+
+local pi = math.pi
+local W = {}
+
+local function rect(rng, x, y)
+  return { kind = 'rect', x = x, y = y, w = rng:range(10, 60), h = rng:range(10, 60), angle = rng:range(0, pi) }
+end
+
+local function ngon(n)
+  return function(rng, x, y)
+    -- circumradius from a side length of 10 to 60 px: side = 2 r sin(pi / n)
+    return { kind = 'ngon', x = x, y = y, n = n, r = rng:range(10, 60) / (2 * math.sin(pi / n)),
+      angle = rng:range(0, 2 * pi) }
+  end
+end
+
+local function circle(rng, x, y)
+  return { kind = 'circle', x = x, y = y, r = rng:range(5, 30) }
+end
+
+local function edge(rng, x, y)
+  local a, l = rng:range(0, 2 * pi), rng:range(10, 60)
+  local dx, dy = math.cos(a) * l / 2, math.sin(a) * l / 2
+  return { kind = 'edge', x1 = x - dx, y1 = y - dy, x2 = x + dx, y2 = y + dy }
+end
+
+local function aabb(rng, x, y)
+  return { kind = 'rect', x = x, y = y, w = rng:range(10, 60), h = rng:range(10, 60), angle = 0 }
+end
+
+local function rectOrOctagon(rng, x, y)
+  if rng:next() < 0.5 then return rect(rng, x, y) end
+  return ngon(8)(rng, x, y)
+end
+
+--- Build a strike shape from a description.
+---@param d table
+---@return table shape
+function W.strikeShape(d)
+  local H = S.hapes
+  if d.kind == 'rect' then return H.Rectangle(d.x, d.y, d.w, d.h, d.angle) end
+  if d.kind == 'ngon' then return H.RegularPolygon(d.x, d.y, d.n, d.r, d.angle) end
+  if d.kind == 'circle' then return H.Circle(d.x, d.y, d.r) end
+  if d.kind == 'edge' then return H.Edge(d.x1, d.y1, d.x2, d.y2) end
+  error('no such shape kind ' .. tostring(d.kind))
+end
+
+local function bounds(list)
+  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
+  for i = 1, #list do
+    local a, b, c, d = list[i]:getBounds()
+    x0, y0, x1, y1 = math.min(x0, a), math.min(y0, b), math.max(x1, c), math.max(y1, d)
+  end
+  return x0, y0, x1, y1
+end
+
+-- Does some part of body a overlap some part of body b (per the oracle)? Also returns
+-- the smallest |signed distance| over part pairs (to keep away from touching), and, for a
+-- single pair of shapes, the penetration depth when they overlap.
+local function classify(pa, pb)
+  local hit, margin, sd = false, math.huge, nil
+  for i = 1, #pa do
+    for j = 1, #pb do
+      local da, db = brute.of(pa[i]), brute.of(pb[j])
+      sd = brute.signedDistance(da, db)
+      if sd < 0 then hit = true end
+      margin = math.min(margin, math.abs(sd))
+    end
+  end
+  return hit, margin, (hit and #pa == 1 and #pb == 1) and -sd or nil
+end
+
+local function parts(d)
+  if d.kind == 'compound' then
+    local list = {}
+    for i, p in ipairs(d.parts) do list[i] = W.strikeShape(p) end
+    return list
+  end
+  return { W.strikeShape(d) }
+end
+
+-- Discs of a body's parts, from the descriptions alone, appended to the flat list `out`
+-- after its first 4 * n entries: centre x, y, circumradius (the part lies in that disc) and
+-- inradius (the open disc of that radius lies inside the part; 0 for a segment, whose
+-- midpoint is its centre). Returns the new count.
+local function discs(d, out, n)
+  local k = d.kind
+  local x, y, R, r
+  if k == 'compound' then
+    for _, p in ipairs(d.parts) do n = discs(p, out, n) end
+    return n
+  elseif k == 'circle' then
+    x, y, R, r = d.x, d.y, d.r, d.r
+  elseif k == 'rect' then
+    x, y, R, r = d.x, d.y, math.sqrt(d.w * d.w + d.h * d.h) / 2, math.min(d.w, d.h) / 2
+  elseif k == 'ngon' then
+    x, y, R, r = d.x, d.y, d.r, d.r * math.cos(pi / d.n)
+  elseif k == 'edge' then
+    local dx, dy = d.x2 - d.x1, d.y2 - d.y1
+    x, y, R, r = (d.x1 + d.x2) / 2, (d.y1 + d.y2) / 2, math.sqrt(dx * dx + dy * dy) / 2, 0
+  else
+    error('no such shape kind ' .. tostring(k))
+  end
+  local i = 4 * n
+  out[i + 1], out[i + 2], out[i + 3], out[i + 4] = x, y, R, r
+  return n + 1
+end
+
+-- Far above the rounding of shapes built from these descriptions (coordinates < 1000).
+local SLACK = 1e-6
+
+-- The box around n discs of a flat list.
+local function discBox(c, n)
+  local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
+  for i = 0, 4 * (n - 1), 4 do
+    local x, y, R = c[i + 1], c[i + 2], c[i + 3]
+    if x - R < x0 then x0 = x - R end
+    if y - R < y0 then y0 = y - R end
+    if x + R > x1 then x1 = x + R end
+    if y + R > y1 then y1 = y + R end
+  end
+  return x0, y0, x1, y1
+end
+
+-- Can the discs alone tell that the oracle would turn this candidate down? True when the
+-- bodies' boxes are certainly apart (unless `anyBounds`), or when the verdict is certainly
+-- not `want`: some part pair's inner discs overlap (a hit), or every part pair's outer
+-- discs are apart (a miss).
+local function surelyRejected(ca, na, cb, nb, want, anyBounds)
+  if not anyBounds then
+    local ax0, ay0, ax1, ay1 = discBox(ca, na)
+    local bx0, by0, bx1, by1 = discBox(cb, nb)
+    if ax1 + SLACK < bx0 or bx1 + SLACK < ax0 or ay1 + SLACK < by0 or by1 + SLACK < ay0 then return true end
+  end
+  local allApart = true
+  for i = 0, 4 * (na - 1), 4 do
+    for j = 0, 4 * (nb - 1), 4 do
+      local dx, dy = cb[j + 1] - ca[i + 1], cb[j + 2] - ca[i + 2]
+      local dist = math.sqrt(dx * dx + dy * dy)
+      if dist < ca[i + 4] + cb[j + 4] - SLACK then return not want end
+      if dist <= ca[i + 3] + cb[j + 3] + SLACK then allApart = false end
+    end
+  end
+  return allApart and want
+end
+
+-- `count` pairs from makeA / makeB, half overlapping, all with overlapping bounds unless
+-- `anyBounds` (axis-aligned boxes miss exactly when their bounds are apart).
+local function pairsOf(seed, count, makeA, makeB, anyBounds)
+  local rng = PRNG.new(seed)
+  local list, want = {}, true
+  local ca, cb = {}, {}
+  while #list < count do
+    local a = makeA(rng, 0, 0)
+    local b = makeB(rng, rng:range(-70, 70), rng:range(-70, 70))
+    if not surelyRejected(ca, discs(a, ca, 0), cb, discs(b, cb, 0), want, anyBounds) then
+      local pa, pb = parts(a), parts(b)
+      local ax0, ay0, ax1, ay1 = bounds(pa)
+      local bx0, by0, bx1, by1 = bounds(pb)
+      if anyBounds or (ax0 < bx1 and bx0 < ax1 and ay0 < by1 and by0 < ay1) then
+        local hit, margin, depth = classify(pa, pb)
+        if hit == want and margin > 1e-6 then
+          list[#list + 1] = { a, b, hit = hit, depth = depth }
+          want = not want
+        end
+      end
+    end
+  end
+  return list
+end
+
+local function compound(rng, x, y)
+  return { kind = 'compound', parts = {
+    rect(rng, x - 20, y), circle(rng, x + 20, y), ngon(8)(rng, x, y - 25),
+  } }
+end
+
+--- The pair workloads, in report order: name, description, generator.
+W.pairWorkloads = {
+  { name = 'poly-poly', what = 'rotated rectangles and 8-gons', a = rectOrOctagon, b = rectOrOctagon },
+  { name = 'circle-poly', what = 'circle against rectangle or 8-gon', a = circle, b = rectOrOctagon },
+  { name = 'circle-circle', what = 'circles', a = circle, b = circle },
+  { name = 'edge-poly', what = 'segment against rectangle or 8-gon', a = edge, b = rectOrOctagon },
+  { name = '4-gons', what = 'regular 4-gons', a = ngon(4), b = ngon(4) },
+  { name = '8-gons', what = 'regular 8-gons', a = ngon(8), b = ngon(8) },
+  { name = '16-gons', what = 'regular 16-gons', a = ngon(16), b = ngon(16) },
+  { name = 'compound', what = 'colliders of rectangle + circle + 8-gon', a = compound, b = compound },
+  { name = 'aabb', what = 'axis-aligned rectangles (misses: bounds apart)', a = aabb, b = aabb, anyBounds = true },
+}
+
+--- Generate the pairs of a named workload.
+---@param name string @param count integer @param seed integer
+---@return table[] pairs, each { descA, descB, hit = boolean, depth = oracle's penetration depth
+---   (hits between two single shapes only) }
+function W.generate(name, count, seed)
+  for i, w in ipairs(W.pairWorkloads) do
+    if w.name == name then return pairsOf(seed + i, count, w.a, w.b, w.anyBounds) end
+  end
+  error('no workload ' .. name)
+end
+
+--- Frame workload for transforms: `count` bodies to move, turn and bound every frame.
+---@param count integer @param seed integer
+---@return table[] descriptions
+function W.bodies(count, seed)
+  local rng = PRNG.new(seed)
+  local list = {}
+  for i = 1, count do list[i] = rectOrOctagon(rng, rng:range(0, 800), rng:range(0, 600)) end
+  return list
+end
+
+return W
