@@ -34,7 +34,7 @@ for _, name in ipairs({ 'ConvexPolygon', 'Circle', 'Edge', 'Ellipse', 'Rectangle
   S.hapes[name] = require(ROOT .. '.shapes.' .. name)
   local _ = S.trikers[name]
 end
-for _, name in ipairs({ 'Capsule', 'Concave' }) do
+for _, name in ipairs({ 'Capsule', 'Concave', 'Chain' }) do
   S.trikers[name] = require(ROOT .. '.colliders.' .. name)
 end
 

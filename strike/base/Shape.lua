@@ -12,7 +12,7 @@ local number, positive, optPoint, finite, fail = check.number, check.positive, c
 
 ---@class strike.Shape : strike.Object
 ---@field parent strike.Collider|nil the collider holding this shape, if any
----@field kind string how the narrow phase treats it: 'polygon' or 'circle'
+---@field kind string how the narrow phase treats it: 'polygon', 'circle' or 'chain' (a chain segment)
 ---@field name string the class name, as S.hapes names it
 ---@field type string always 'shape'
 local Shape = Object:extend()

@@ -1,0 +1,154 @@
+--- One segment of a chain (S.trikers.Chain): a one-sided Edge that knows its neighbours.
+---
+--- Geometry is an Edge's (vertices p1, p2; face 1 is p1 to p2 with the normal
+--- n = (ey, -ex) / len, face 2 is p2 to p1), plus two *ghost vertices*: the chain's point
+--- before p1 and the one after p2 (none at an open chain's ends). They are stored like the
+--- vertices, in the local frame (relative to the centroid, unrotated, unscaled), so they
+--- follow every transform of the segment or of its collider.
+---
+--- Solid side: face 1's normal n points to the FREE side. For a loop given in positive
+--- winding (counter-clockwise with y up, clockwise on a LÖVE screen), n points outward;
+--- for an open chain the free side is on the right of the direction of travel with y up
+--- (on the left with y down: a floor given from left to right on a LÖVE screen has its
+--- free side above it). Shapes whose centroid is behind the segment's line never collide
+--- with it.
+---
+--- Corners: the corner at p1 is convex when the chain turns there so that the free side
+--- gets wider: cross(p1 - prev, p2 - p1) > 0 (a left turn with y up); likewise at p2. An
+--- open end counts as convex, like the end of a lone edge. The narrow phase
+--- (strike/collide/chain.lua) reads these fields, refreshed with the world vertices:
+---   _wnx[1], _wny[1]    n, the segment's own normal (from VertexShape)
+---   _g1x, _g1y          at p1: the previous segment's unit normal, or at an open start
+---                       the outward tangent -(p2 - p1) / len
+---   _g2x, _g2y          at p2: the next segment's unit normal, or at an open end the
+---                       outward tangent (p2 - p1) / len
+---   _convex1, _convex2  whether the corner at p1 (p2) is convex (true at an open end)
+---   _hasPrev, _hasNext  whether there is a neighbour there
+---   _wprevx, _wprevy, _wnextx, _wnexty   world ghost vertices (when present)
+local ROOT = (...):match('^(.-)%.base%.[^%.]+$')
+local Edge = require(ROOT .. '.shapes.Edge')
+local check = require(ROOT .. '.check')
+
+local sqrt = math.sqrt
+local number, fail, describe = check.number, check.fail, check.describe
+
+---@class strike.ChainSegment : strike.Edge
+local ChainSegment = Edge:extend()
+ChainSegment.name = 'ChainSegment'
+ChainSegment.kind = 'chain'
+
+local FNAME = 'strike.ChainSegment'
+
+-- An optional ghost vertex: both coordinates, or neither.
+local function optGhost(x, y, what)
+  if x == nil and y == nil then return false end
+  number(x, FNAME, what .. ' x')
+  number(y, FNAME, what .. ' y')
+  return true
+end
+
+--- A one-sided segment from (x1, y1) to (x2, y2) with the ghost vertices (x0, y0), the
+--- chain's point before p1, and (x3, y3), the point after p2; either pair may be nil (an
+--- open end). S.trikers.Chain builds these; the endpoints must differ, and each ghost
+--- vertex must differ from the endpoint it joins.
+---@param x1 number @param y1 number @param x2 number @param y2 number
+---@param x0 number|nil @param y0 number|nil @param x3 number|nil @param y3 number|nil
+function ChainSegment:new(x1, y1, x2, y2, x0, y0, x3, y3)
+  number(x1, FNAME, 'x1')
+  number(y1, FNAME, 'y1')
+  number(x2, FNAME, 'x2')
+  number(y2, FNAME, 'y2')
+  if x1 == x2 and y1 == y2 then
+    fail(('%s: the endpoints must differ, got (%s, %s) twice'):format(FNAME, describe(x1), describe(y1)))
+  end
+  local hasPrev, hasNext = optGhost(x0, y0, 'previous point'), optGhost(x3, y3, 'next point')
+  if hasPrev and x0 == x1 and y0 == y1 then fail(FNAME .. ': the previous point must differ from p1') end
+  if hasNext and x3 == x2 and y3 == y2 then fail(FNAME .. ': the next point must differ from p2') end
+  for _, v in ipairs({ x2 - x1, y2 - y1, hasPrev and x1 - x0 or 0, hasPrev and y1 - y0 or 0,
+    hasNext and x3 - x2 or 0, hasNext and y3 - y2 or 0 }) do
+    if not check.finite(v * v) then fail(FNAME .. ': coordinates too large') end
+  end
+  if not check.finite((x1 + x2) / 2) or not check.finite((y1 + y2) / 2) then
+    fail(FNAME .. ': coordinates too large')
+  end
+  Edge.new(self, x1, y1, x2, y2)
+  local cx, cy = self._x, self._y
+  local ex, ey = x2 - x1, y2 - y1
+  local l = sqrt(ex * ex + ey * ey)
+  ex, ey = ex / l, ey / l
+  self._hasPrev, self._hasNext = hasPrev, hasNext
+  if hasPrev then
+    local dx, dy = x1 - x0, y1 - y0
+    local d = sqrt(dx * dx + dy * dy)
+    dx, dy = dx / d, dy / d
+    self._lprevx, self._lprevy = x0 - cx, y0 - cy
+    self._lg1x, self._lg1y = dy, -dx
+    self._convex1 = dx * ey - dy * ex > 0
+  else
+    self._lg1x, self._lg1y = -ex, -ey
+    self._convex1 = true
+  end
+  if hasNext then
+    local dx, dy = x3 - x2, y3 - y2
+    local d = sqrt(dx * dx + dy * dy)
+    dx, dy = dx / d, dy / d
+    self._lnextx, self._lnexty = x3 - cx, y3 - cy
+    self._lg2x, self._lg2y = dy, -dx
+    self._convex2 = ex * dy - ey * dx > 0
+  else
+    self._lg2x, self._lg2y = ex, ey
+    self._convex2 = true
+  end
+end
+
+--- Recompute the world vertices, normals and bounds (VertexShape's refresh), then the
+--- world ghost vertices and the corner normals.
+function ChainSegment:_refresh()
+  Edge._refresh(self)
+  local c, s, k = self._cos, self._sin, self._scale
+  local sc, ss = c * k, s * k
+  local x0, y0 = self._x, self._y
+  if self._hasPrev then
+    local x, y = self._lprevx, self._lprevy
+    self._wprevx, self._wprevy = x0 + sc * x - ss * y, y0 + ss * x + sc * y
+  end
+  if self._hasNext then
+    local x, y = self._lnextx, self._lnexty
+    self._wnextx, self._wnexty = x0 + sc * x - ss * y, y0 + ss * x + sc * y
+  end
+  local x, y = self._lg1x, self._lg1y
+  self._g1x, self._g1y = c * x - s * y, s * x + c * y
+  x, y = self._lg2x, self._lg2y
+  self._g2x, self._g2y = c * x - s * y, s * x + c * y
+end
+
+--- The ghost vertices in world coordinates: the chain's point before p1 and the one after
+--- p2, each nil, nil at an open chain's end.
+---@return number|nil x0, number|nil y0, number|nil x3, number|nil y3
+function ChainSegment:getGhostVertices()
+  if self._dirty then self:_refresh() end
+  local x0, y0, x3, y3
+  if self._hasPrev then x0, y0 = self._wprevx, self._wprevy end
+  if self._hasNext then x3, y3 = self._wnextx, self._wnexty end
+  return x0, y0, x3, y3
+end
+
+--- Whether the chain's corner at vertex i (1: p1, 2: p2) is convex: the free side gets
+--- wider there (an open end counts as convex). Nil for any other i.
+---@param i integer
+---@return boolean|nil
+function ChainSegment:isConvex(i)
+  if i == 1 then return self._convex1 elseif i == 2 then return self._convex2 end
+  return nil
+end
+
+--- Arguments that rebuild the segment as it is now: x1, y1, x2, y2, x0, y0, x3, y3 (the
+--- ghost vertices nil at an open end).
+---@return number, number, number, number, number|nil, number|nil, number|nil, number|nil
+function ChainSegment:unpack()
+  local x1, y1, x2, y2 = Edge.unpack(self)
+  local x0, y0, x3, y3 = self:getGhostVertices()
+  return x1, y1, x2, y2, x0, y0, x3, y3
+end
+
+return ChainSegment

@@ -1,0 +1,189 @@
+--- Narrow phase for chain segments (strike/base/ChainSegment.lua): one-sided segments
+--- with ghost vertices, the technique of Erin Catto, "Ghost Collisions" (Box2D blog, June
+--- 2020, https://box2d.org/posts/2020/06/ghost-collisions/), as Box2D v3's chain segments
+--- use it. Written for strike; it writes into an MTV-shaped `out` and allocates nothing.
+---
+--- A chain segment S has the endpoints p1, p2 and the free-side normal n (face 1's).
+--- Against a polygon, an edge or a circle B, with m the MTV normal from S toward B:
+---  1. The ordinary edge test (sat.lua, S as a two-vertex polygon). A separating result
+---     is returned as it is.
+---  2. One-sided: when B's centroid is behind S's line, n . (c - p1) < 0, there is no
+---     collision (a separating result with depth 0: no gap is measured).
+---  3. Ghost vertices: m is admissible when m == n (|cross(n, m)| <= 1e-12), or when m
+---     lies in the cone of normals of a convex corner: at p1 from the previous segment's
+---     normal to n, at p2 from n to the next segment's normal (1e-12 slack). An open end
+---     counts as convex, like a lone edge's end, with the outward tangent in place of the
+---     missing neighbour's normal (the free half of the lone edge's end cap). An
+---     admissible result is returned as it is.
+---  4. Otherwise, when m leans toward a convex corner that has a neighbour (cross(n, m) < 0
+---     for p1, > 0 for p2), B reaches past that corner (beyond p1 or p2 along the
+---     segment), and the neighbour's normal g separates B from the corner more than n does
+---     (min over B of g . (v - corner) > min over B of n . (v - p1)), the contact belongs
+---     to the neighbour segment, which reports it: no collision from S (depth 0). This is
+---     Box2D's "the neighbour owns it" (skip) case; without it a body that has just
+---     passed a hilltop would be pushed back along the previous segment's normal.
+---  5. Otherwise (concave corners, normals behind the free side, open ends) the result is
+---     replaced by the push along n: depth = how far B reaches behind S's line (polygons:
+---     -min over the vertices of n . (v - p1); circles: r - n . (c - p1)), a collision when
+---     depth > 0, edge index 1 (S's face 1; -1 when S is the second argument), normal n
+---     (-n when S is the second argument: the MTV points from the first toward the second).
+--- Chain segments never collide with each other.
+local ROOT = (...):match('^(.-)%.collide%.[^%.]+$')
+local sat = require(ROOT .. '.collide.sat')
+
+local result, polygonPolygon, polygonCircle, circlePolygon = sat.result, sat.polygonPolygon, sat.polygonCircle,
+  sat.circlePolygon
+local huge = math.huge
+
+local chain = {}
+
+--- Slack of the admissibility tests, on cross products of unit vectors (sines).
+chain.TOL = 1e-12
+local TOL = chain.TOL
+
+-- Is m (unit, from S toward the other shape) admissible for S? (S is refreshed.)
+local function admissible(S, mx, my)
+  local nx, ny = S._wnx[1], S._wny[1]
+  local c = nx * my - ny * mx -- cross(n, m) = m . e: < 0 leans toward p1, > 0 toward p2
+  if c <= TOL and c >= -TOL and nx * mx + ny * my > 0 then return true end
+  if c < 0 then
+    return S._convex1 and S._g1x * my - S._g1y * mx >= -TOL -- cross(g1, m) >= 0
+  end
+  return S._convex2 and mx * S._g2y - my * S._g2x >= -TOL -- cross(m, g2) >= 0
+end
+
+--- admissible(segment, mx, my): true when the unit normal (mx, my), pointing from the chain
+--- segment toward the other shape, is one the segment may push along (step 3 above). The
+--- segment must be refreshed.
+---@param S strike.ChainSegment @param mx number @param my number
+---@return boolean
+chain.admissible = admissible
+
+-- Steps 4 and 5 for a polygon P: false when the neighbour owns the contact, else the depth
+-- of the push along n.
+local function polygonVerdict(S, P, mx, my)
+  local nx, ny = S._wnx[1], S._wny[1]
+  local x1, y1 = S._wx[1], S._wy[1]
+  local wx, wy, nb = P._wx, P._wy, P._n
+  local sepN = huge
+  for j = 1, nb do
+    local s = nx * (wx[j] - x1) + ny * (wy[j] - y1)
+    if s < sepN then sepN = s end
+  end
+  local c = nx * my - ny * mx
+  if c < 0 and S._hasPrev and S._convex1 then
+    local gx, gy = S._g1x, S._g1y
+    local reach, sepG = huge, huge -- reach: min over P of e . (v - p1), e = (-ny, nx)
+    for j = 1, nb do
+      local dx, dy = wx[j] - x1, wy[j] - y1
+      local r, s = nx * dy - ny * dx, gx * dx + gy * dy
+      if r < reach then reach = r end
+      if s < sepG then sepG = s end
+    end
+    if reach < 0 and sepG > sepN then return false end
+  elseif c > 0 and S._hasNext and S._convex2 then
+    local gx, gy = S._g2x, S._g2y
+    local x2, y2 = S._wx[2], S._wy[2]
+    local reach, sepG = -huge, huge -- reach: max over P of e . (v - p2)
+    for j = 1, nb do
+      local dx, dy = wx[j] - x2, wy[j] - y2
+      local r, s = nx * dy - ny * dx, gx * dx + gy * dy
+      if r > reach then reach = r end
+      if s < sepG then sepG = s end
+    end
+    if reach > 0 and sepG > sepN then return false end
+  end
+  return -sepN
+end
+
+-- The same for a circle C.
+local function circleVerdict(S, C, mx, my)
+  local nx, ny = S._wnx[1], S._wny[1]
+  local x1, y1 = S._wx[1], S._wy[1]
+  local cx, cy, r = C._x, C._y, C._r * C._scale
+  local dx, dy = cx - x1, cy - y1
+  local sepN = nx * dx + ny * dy - r
+  local c = nx * my - ny * mx
+  if c < 0 and S._hasPrev and S._convex1 then
+    if nx * dy - ny * dx - r < 0 and S._g1x * dx + S._g1y * dy - r > sepN then return false end
+  elseif c > 0 and S._hasNext and S._convex2 then
+    dx, dy = cx - S._wx[2], cy - S._wy[2]
+    if nx * dy - ny * dx + r > 0 and S._g2x * dx + S._g2y * dy - r > sepN then return false end
+  end
+  return -sepN
+end
+
+-- Is the point (x, y) behind S's line?
+local function behind(S, x, y)
+  return S._wnx[1] * (x - S._wx[1]) + S._wny[1] * (y - S._wy[1]) < 0
+end
+
+--- Chain segment S against polygon (or edge) P.
+---@param S strike.ChainSegment @param P strike.VertexShape @param out table an MTV-shaped table
+---@return table out
+function chain.chainPolygon(S, P, out)
+  polygonPolygon(S, P, out)
+  if out.separating then return out end
+  local nx, ny = S._wnx[1], S._wny[1]
+  if behind(S, P._x, P._y) then return result(out, S, P, nx, ny, 0, 1) end
+  local mx, my = out.nx, out.ny
+  if admissible(S, mx, my) then return out end
+  local d = polygonVerdict(S, P, mx, my)
+  if not d then return result(out, S, P, nx, ny, 0, 1) end
+  return result(out, S, P, nx, ny, d, 1)
+end
+
+--- Polygon (or edge) P against chain segment S.
+---@param P strike.VertexShape @param S strike.ChainSegment @param out table an MTV-shaped table
+---@return table out
+function chain.polygonChain(P, S, out)
+  polygonPolygon(P, S, out)
+  if out.separating then return out end
+  local nx, ny = S._wnx[1], S._wny[1]
+  if behind(S, P._x, P._y) then return result(out, P, S, -nx, -ny, 0, -1) end
+  local mx, my = -out.nx, -out.ny
+  if admissible(S, mx, my) then return out end
+  local d = polygonVerdict(S, P, mx, my)
+  if not d then return result(out, P, S, -nx, -ny, 0, -1) end
+  return result(out, P, S, -nx, -ny, d, -1)
+end
+
+--- Chain segment S against circle C.
+---@param S strike.ChainSegment @param C strike.Circle @param out table an MTV-shaped table
+---@return table out
+function chain.chainCircle(S, C, out)
+  polygonCircle(S, C, out)
+  if out.separating then return out end
+  local nx, ny = S._wnx[1], S._wny[1]
+  if behind(S, C._x, C._y) then return result(out, S, C, nx, ny, 0, 1) end
+  local mx, my = out.nx, out.ny
+  if admissible(S, mx, my) then return out end
+  local d = circleVerdict(S, C, mx, my)
+  if not d then return result(out, S, C, nx, ny, 0, 1) end
+  return result(out, S, C, nx, ny, d, 1)
+end
+
+--- Circle C against chain segment S.
+---@param C strike.Circle @param S strike.ChainSegment @param out table an MTV-shaped table
+---@return table out
+function chain.circleChain(C, S, out)
+  circlePolygon(C, S, out)
+  if out.separating then return out end
+  local nx, ny = S._wnx[1], S._wny[1]
+  if behind(S, C._x, C._y) then return result(out, C, S, -nx, -ny, 0, -1) end
+  local mx, my = -out.nx, -out.ny
+  if admissible(S, mx, my) then return out end
+  local d = circleVerdict(S, C, mx, my)
+  if not d then return result(out, C, S, -nx, -ny, 0, -1) end
+  return result(out, C, S, -nx, -ny, d, -1)
+end
+
+--- Two chain segments never collide: a separating result with depth 0 along A's normal.
+---@param A strike.ChainSegment @param B strike.ChainSegment @param out table an MTV-shaped table
+---@return table out
+function chain.chainChain(A, B, out)
+  if A._dirty then A:_refresh() end
+  return result(out, A, B, A._wnx[1], A._wny[1], 0, 1)
+end
+
+return chain
