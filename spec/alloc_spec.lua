@@ -1,50 +1,12 @@
 -- Allocation budget: with an `out` MTV, the collision paths allocate nothing.
 -- This counts kilobytes (collectgarbage 'count' with the GC stopped), never seconds.
 local S = require('strike')
--- Locals, not globals: busted runs specs in an environment whose global lookups may
--- allocate, and the measuring window must hold only the calls being measured.
-local collectgarbage, huge = collectgarbage, math.huge
-
-local function run(fn, n)
-  for _ = 1, n do fn() end
-end
-
--- KB allocated by `n` calls of `fn`: the least of three windows, each with the GC stopped
--- and after a warm-up through the same loop.
-local function kbPer(fn, n)
-  run(fn, 20000)
-  local least = huge
-  for _ = 1, 3 do
-    collectgarbage('collect')
-    collectgarbage('stop')
-    run(fn, 100)
-    local before = collectgarbage('count')
-    run(fn, n)
-    local used = collectgarbage('count') - before
-    collectgarbage('restart')
-    if used < least then least = used end
-  end
-  return least
-end
-
--- "Allocates nothing" means no allocation per call. The smallest Lua allocation is 16
--- bytes or more, so one per call over 10,000 calls is at least 156 KB. A window may still
--- hold a one-time growth of the VM's own: under busted, Lua 5.2 shows the same ~3.2 KB
--- whether the window holds 1 call or 40,000, so the budget is under 4 KB per window.
-local ONE_TIME_KB = 4
-local function nothingPerCall(kb, what)
-  assert(kb < ONE_TIME_KB, ('%s allocated %.3f KB over 10,000 calls'):format(what, kb))
-end
-
--- On LuaJIT the measurements run interpreted: the trace compiler allocates its own
--- bookkeeping whenever it compiles a new side trace, which can happen at any moment, while
--- the interpreter shows the program's allocations exactly (compiled code can only sink
--- allocations, never add any). bench/ reports garbage with the JIT on.
-local jit = rawget(_G, 'jit')
+local alloc = require('spec.helpers.alloc')
+local kbPer, nothingPerCall, ONE_TIME_KB = alloc.kbPer, alloc.nothingPerCall, alloc.ONE_TIME_KB
 
 describe('allocation', function()
-  setup(function() if jit then jit.off() end end)
-  teardown(function() if jit then jit.on() end end)
+  setup(alloc.jitOff) -- measured interpreted on LuaJIT: see spec/helpers/alloc.lua
+  teardown(alloc.jitOn)
   local H, T = S.hapes, S.trikers
   local poly = H.Rectangle(0, 0, 10, 10, 0.3)
   local oct = H.RegularPolygon(5, 3, 8, 6)

@@ -12,7 +12,7 @@ local H, T = S.hapes, S.trikers
 local chain = require('strike.collide.chain')
 local sat = require('strike.collide.sat')
 local unpack = table.unpack or unpack -- luacheck: ignore 113 143
-local abs, sqrt, huge, max = math.abs, math.sqrt, math.huge, math.max
+local abs, sqrt, max = math.abs, math.sqrt, math.max
 
 local function minX(b) return (b:getBounds()) end
 local function maxX(b) local _, _, x = b:getBounds() return x end
@@ -499,28 +499,12 @@ end)
 
 -- Allocation, measured as in spec/alloc_spec.lua (KB with the GC stopped, the least of three
 -- windows; under 4 KB per window is no allocation per call: 10,000 calls of 16 bytes are 156 KB).
-local collectgarbage = collectgarbage
-local function run(fn, n) for _ = 1, n do fn() end end
-local function kbPer(fn, n)
-  run(fn, 2000)
-  local least = huge
-  for _ = 1, 3 do
-    collectgarbage('collect')
-    collectgarbage('stop')
-    run(fn, 100)
-    local before = collectgarbage('count')
-    run(fn, n)
-    local used = collectgarbage('count') - before
-    collectgarbage('restart')
-    if used < least then least = used end
-  end
-  return least
-end
-local jit = rawget(_G, 'jit')
+local alloc = require('spec.helpers.alloc')
+local function kbPer(fn, n) return alloc.kbPer(fn, n, 2000) end
 
 describe('chain allocation', function()
-  setup(function() if jit then jit.off() end end)
-  teardown(function() if jit then jit.on() end end)
+  setup(alloc.jitOff)
+  teardown(alloc.jitOn)
 
   it('S.triking and S.AT with an out MTV allocate nothing against a Chain, on every path', function()
     local hill = T.Chain(0, 0, 10, -2, 20, 0, 30, 0, 40, 2, 50, 0)

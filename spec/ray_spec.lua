@@ -432,38 +432,14 @@ end)
 
 -- Allocation: the same method as spec/alloc_spec.lua (kilobytes with the GC stopped, the
 -- least of three windows, interpreted on LuaJIT).
-local collectgarbage, huge = collectgarbage, math.huge
-
-local function run(fn, n)
-  for _ = 1, n do fn() end
-end
-
-local function kbPer(fn, n)
-  run(fn, 2000) -- (a shorter warm-up than alloc_spec's: this file measures many paths)
-  local least = huge
-  for _ = 1, 3 do
-    collectgarbage('collect')
-    collectgarbage('stop')
-    run(fn, 100)
-    local before = collectgarbage('count')
-    run(fn, n)
-    local used = collectgarbage('count') - before
-    collectgarbage('restart')
-    if used < least then least = used end
-  end
-  return least
-end
-
-local ONE_TIME_KB = 4 -- see spec/alloc_spec.lua
-local function nothingPerCall(kb, what)
-  assert(kb < ONE_TIME_KB, ('%s allocated %.3f KB over 10,000 calls'):format(what, kb))
-end
-
-local jit = rawget(_G, 'jit')
+local alloc = require('spec.helpers.alloc')
+local nothingPerCall = alloc.nothingPerCall
+-- (a shorter warm-up than alloc_spec's: this file measures many paths)
+local function kbPer(fn, n) return alloc.kbPer(fn, n, 2000) end
 
 describe('ray allocation', function()
-  setup(function() if jit then jit.off() end end)
-  teardown(function() if jit then jit.on() end end)
+  setup(alloc.jitOff)
+  teardown(alloc.jitOn)
 
   local shapes = {
     polygon = H.RegularPolygon(0, 0, 8, 2, 0.3),

@@ -204,4 +204,56 @@ function Shape._point(x, y, fname)
   return x, y
 end
 
+-- Rays (strike/collide/ray.lua holds the algorithms) ------------------------------------
+
+local ray = require(ROOT .. '.collide.ray')
+local checkRay, checkSegment, checkMax, checkTs = ray.checkRay, ray.checkSegment, ray.checkMax, ray.checkTs
+local rayIntersections, rayIntersects, rayCast, segmentCast = ray.intersections, ray.intersects, ray.rayCast,
+  ray.segmentCast
+
+--- Where the ray from (x, y) along (dx, dy) crosses the boundary: distances along the
+--- normalised direction (any non-zero length is accepted), ascending, none behind the
+--- origin. Two for a ray that passes through; one for a graze or tangent, for a ray
+--- starting inside (its exit) and for an Edge it crosses; a collinear ray on an Edge gives
+--- the overlap's ends. Fills `ts` from index 1 (entries past n cleared; nothing allocated) or a new table.
+---@param x number @param y number @param dx number @param dy number @param ts number[]|nil
+---@return number[]|nil ts, integer n the list and the count; nil, 0 when the ray misses
+function Shape:rayIntersections(x, y, dx, dy, ts)
+  checkRay('strike.Shape:rayIntersections', x, y, dx, dy)
+  if ts ~= nil and type(ts) ~= 'table' then checkTs('strike.Shape:rayIntersections', ts) end
+  return rayIntersections(self, x, y, dx, dy, ts)
+end
+
+--- True when the ray from (x, y) along (dx, dy) hits the shape (exactly when
+--- rayIntersections returns a list). Allocates nothing.
+---@param x number @param y number @param dx number @param dy number
+---@return boolean
+function Shape:rayIntersects(x, y, dx, dy)
+  checkRay('strike.Shape:rayIntersects', x, y, dx, dy)
+  return rayIntersects(self, x, y, dx, dy)
+end
+
+--- The first boundary point of the ray from (x, y) along (dx, dy) at a distance of at
+--- most maxDistance (default math.huge): distance, hit point and the outward unit normal
+--- there; nil when there is none. A ray starting inside reports its exit. The normal is
+--- the face that bounds the ray's interval at that end (at a vertex: the entering face;
+--- on ties, the lower-numbered face); a circle's is (hit - centre) / r. An Edge's normal
+--- faces the ray's origin; for a ray along the Edge it is the segment's direction at the
+--- end hit. Allocates nothing.
+---@param x number @param y number @param dx number @param dy number @param maxDistance number|nil
+---@return number|nil distance, number x, number y, number nx, number ny
+function Shape:rayCast(x, y, dx, dy, maxDistance)
+  checkRay('strike.Shape:rayCast', x, y, dx, dy)
+  return rayCast(self, x, y, dx, dy, checkMax('strike.Shape:rayCast', maxDistance))
+end
+
+--- rayCast along the segment from (x1, y1) to (x2, y2): the first hit on the segment, its
+--- distance from (x1, y1) in units of length; nil when there is none or p1 == p2.
+---@param x1 number @param y1 number @param x2 number @param y2 number
+---@return number|nil distance, number x, number y, number nx, number ny
+function Shape:segmentCast(x1, y1, x2, y2)
+  checkSegment('strike.Shape:segmentCast', x1, y1, x2, y2)
+  return segmentCast(self, x1, y1, x2, y2)
+end
+
 return Shape
