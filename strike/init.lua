@@ -246,4 +246,33 @@ function S.aabb(a, b)
   return ax0 < bx1 and bx0 < ax1 and ay0 < by1 and by0 < ay1
 end
 
+-- LÖVE debug drawing, in strike/draw.lua, the only file that reads `love`; it is loaded on
+-- the first call, so strike works without LÖVE. Each restores the colour it found.
+local function drawing() return require(ROOT .. '.draw') end
+
+--- Draw a colliding MTV (red) from the first shape's centroid, and the line between the
+--- two shapes' centroids. Nothing for a separating MTV.
+---@param mtv strike.MTV
+function S.howMTV(mtv) drawing().mtv(mtv) end
+
+--- Draw the outward normals of a collider's (or shape's) shapes (cyan), `len` long
+--- (default 15); circles get eight.
+---@param collider strike.Collider|strike.Shape @param len number|nil
+function S.howNorms(collider, len) drawing().normals(collider, len) end
+
+--- Draw both shapes' projections on the MTV's axis (yellow), side by side.
+---@param mtv strike.MTV
+function S.howProj(mtv) drawing().projections(mtv) end
+
+--- Draw the contact points from S.ite (green) with their normal, `len` long (default 15).
+---@param contacts table|nil @param len number|nil
+function S.howContacts(contacts, len) drawing().contacts(contacts, len) end
+
+--- Cast a ray at a shape or collider and draw it (magenta) up to its first hit, with the
+--- hit point and normal. Returns the hit's distance, or nil.
+---@param body strike.Shape|strike.Collider @param x number @param y number @param dx number @param dy number
+---@param maxDistance number|nil
+---@return number|nil
+function S.howRay(body, x, y, dx, dy, maxDistance) return drawing().ray(body, x, y, dx, dy, maxDistance) end
+
 return S

@@ -204,6 +204,13 @@ function Shape._point(x, y, fname)
   return x, y
 end
 
+--- Draw the shape with LÖVE in the current colour (strike/draw.lua, loaded on first use;
+--- an error when LÖVE is not there).
+---@param mode string|nil 'line' (default) or 'fill'
+function Shape:draw(mode)
+  require(ROOT .. '.draw').body(self, mode)
+end
+
 -- Rays (strike/collide/ray.lua holds the algorithms) ------------------------------------
 
 local ray = require(ROOT .. '.collide.ray')

@@ -471,6 +471,13 @@ function Collider:copy(x, y, angle)
   return c
 end
 
+--- Draw every shape of the collider with LÖVE in the current colour (strike/draw.lua,
+--- loaded on first use; an error when LÖVE is not there).
+---@param mode string|nil 'line' (default) or 'fill'
+function Collider:draw(mode)
+  require(ROOT .. '.draw').body(self, mode)
+end
+
 --- Merge adjacent convex polygons among the direct children wherever their union is
 --- convex (recursing into nested colliders); the merged piece replaces the first of the
 --- two in order. Circles and edges are left alone.
