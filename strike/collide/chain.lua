@@ -118,64 +118,46 @@ local function behind(S, x, y)
   return S._wnx[1] * (x - S._wx[1]) + S._wny[1] * (y - S._wy[1]) < 0
 end
 
+-- Steps 2 to 5 of the header, after the ordinary edge test filled `out` for (S, B), or
+-- for (B, S) when `flip`. `verdict` measures the push along n for B's kind.
+local function ghostRules(S, B, out, flip, verdict)
+  if out.separating then return out end
+  local k = flip and -1 or 1 -- the MTV points from the first argument to the second
+  local nx, ny = k * S._wnx[1], k * S._wny[1]
+  local first, second = S, B
+  if flip then first, second = B, S end
+  if behind(S, B._x, B._y) then return result(out, first, second, nx, ny, 0, k) end
+  local mx, my = k * out.nx, k * out.ny
+  if admissible(S, mx, my) then return out end
+  return result(out, first, second, nx, ny, verdict(S, B, mx, my) or 0, k)
+end
+
 --- Chain segment S against polygon (or edge) P.
 ---@param S strike.ChainSegment @param P strike.VertexShape @param out table an MTV-shaped table
 ---@return table out
 function chain.chainPolygon(S, P, out)
-  polygonPolygon(S, P, out)
-  if out.separating then return out end
-  local nx, ny = S._wnx[1], S._wny[1]
-  if behind(S, P._x, P._y) then return result(out, S, P, nx, ny, 0, 1) end
-  local mx, my = out.nx, out.ny
-  if admissible(S, mx, my) then return out end
-  local d = polygonVerdict(S, P, mx, my)
-  if not d then return result(out, S, P, nx, ny, 0, 1) end
-  return result(out, S, P, nx, ny, d, 1)
+  return ghostRules(S, P, polygonPolygon(S, P, out), false, polygonVerdict)
 end
 
 --- Polygon (or edge) P against chain segment S.
 ---@param P strike.VertexShape @param S strike.ChainSegment @param out table an MTV-shaped table
 ---@return table out
 function chain.polygonChain(P, S, out)
-  polygonPolygon(P, S, out)
-  if out.separating then return out end
-  local nx, ny = S._wnx[1], S._wny[1]
-  if behind(S, P._x, P._y) then return result(out, P, S, -nx, -ny, 0, -1) end
-  local mx, my = -out.nx, -out.ny
-  if admissible(S, mx, my) then return out end
-  local d = polygonVerdict(S, P, mx, my)
-  if not d then return result(out, P, S, -nx, -ny, 0, -1) end
-  return result(out, P, S, -nx, -ny, d, -1)
+  return ghostRules(S, P, polygonPolygon(P, S, out), true, polygonVerdict)
 end
 
 --- Chain segment S against circle C.
 ---@param S strike.ChainSegment @param C strike.Circle @param out table an MTV-shaped table
 ---@return table out
 function chain.chainCircle(S, C, out)
-  polygonCircle(S, C, out)
-  if out.separating then return out end
-  local nx, ny = S._wnx[1], S._wny[1]
-  if behind(S, C._x, C._y) then return result(out, S, C, nx, ny, 0, 1) end
-  local mx, my = out.nx, out.ny
-  if admissible(S, mx, my) then return out end
-  local d = circleVerdict(S, C, mx, my)
-  if not d then return result(out, S, C, nx, ny, 0, 1) end
-  return result(out, S, C, nx, ny, d, 1)
+  return ghostRules(S, C, polygonCircle(S, C, out), false, circleVerdict)
 end
 
 --- Circle C against chain segment S.
 ---@param C strike.Circle @param S strike.ChainSegment @param out table an MTV-shaped table
 ---@return table out
 function chain.circleChain(C, S, out)
-  circlePolygon(C, S, out)
-  if out.separating then return out end
-  local nx, ny = S._wnx[1], S._wny[1]
-  if behind(S, C._x, C._y) then return result(out, C, S, -nx, -ny, 0, -1) end
-  local mx, my = -out.nx, -out.ny
-  if admissible(S, mx, my) then return out end
-  local d = circleVerdict(S, C, mx, my)
-  if not d then return result(out, C, S, -nx, -ny, 0, -1) end
-  return result(out, C, S, -nx, -ny, d, -1)
+  return ghostRules(S, C, circlePolygon(C, S, out), true, circleVerdict)
 end
 
 --- Two chain segments never collide: a separating result with depth 0 along A's normal.

@@ -40,6 +40,20 @@ local function alignedFace(P, nx, ny)
   return bi, best
 end
 
+-- Clip the segment a-b to where the signed distances da, db are >= 0: a cut end gets the
+-- corner `tag`. Nothing (nil) when both ends are outside.
+local function clip(ax, ay, bx, by, ca, cb, da, db, tag)
+  if da < 0 and db < 0 then return nil end
+  if da < 0 then
+    local s = da / (da - db)
+    ax, ay, ca = ax + s * (bx - ax), ay + s * (by - ay), tag
+  elseif db < 0 then
+    local s = db / (db - da)
+    bx, by, cb = bx + s * (ax - bx), by + s * (ay - by), tag
+  end
+  return ax, ay, bx, by, ca, cb
+end
+
 -- Clip and keep, with R the reference polygon (face r) and I the incident one (face f).
 -- Returns the number of points written. `side` is 0 or 1 (see the header).
 local function clipFaces(out, R, r, I, f, side)
@@ -56,26 +70,12 @@ local function clipFaces(out, R, r, I, f, side)
   local ca, cb = 0, 1 -- which corner each end is (see the header)
   -- side plane 1: dot(t, p - v1) >= 0
   local lo = tx * v1x + ty * v1y
-  local da, db = tx * ax + ty * ay - lo, tx * bx + ty * by - lo
-  if da < 0 and db < 0 then return 0 end
-  if da < 0 then
-    local s = da / (da - db)
-    ax, ay, ca = ax + s * (bx - ax), ay + s * (by - ay), 2
-  elseif db < 0 then
-    local s = db / (db - da)
-    bx, by, cb = bx + s * (ax - bx), by + s * (ay - by), 2
-  end
+  ax, ay, bx, by, ca, cb = clip(ax, ay, bx, by, ca, cb, tx * ax + ty * ay - lo, tx * bx + ty * by - lo, 2)
+  if not ax then return 0 end
   -- side plane 2: dot(t, p - v2) <= 0
   local hi = tx * v2x + ty * v2y
-  da, db = hi - (tx * ax + ty * ay), hi - (tx * bx + ty * by)
-  if da < 0 and db < 0 then return 0 end
-  if da < 0 then
-    local s = da / (da - db)
-    ax, ay, ca = ax + s * (bx - ax), ay + s * (by - ay), 3
-  elseif db < 0 then
-    local s = db / (db - da)
-    bx, by, cb = bx + s * (ax - bx), by + s * (ay - by), 3
-  end
+  ax, ay, bx, by, ca, cb = clip(ax, ay, bx, by, ca, cb, hi - (tx * ax + ty * ay), hi - (tx * bx + ty * by), 3)
+  if not ax then return 0 end
   -- keep what is behind the reference face
   local off = nx * v1x + ny * v1y
   local base = ((side * 65536 + r) * 65536 + f) * 4
