@@ -1,7 +1,7 @@
 # strike: make test runs luacheck and the busted suite under every Lua VM.
 VMS ?= lua5.1 lua5.2 lua5.3 lua5.4 luajit
 
-.PHONY: test deps lint spec copy-check bench
+.PHONY: test deps lint spec copy-check bench demo
 
 test: deps lint copy-check spec
 
@@ -27,3 +27,12 @@ BENCH_VMS ?= luajit lua5.4
 
 bench:
 	@BENCH_VMS="$(BENCH_VMS)" bash bench/bench.sh
+
+# The headless example (plain Lua, any VM): a scene's collisions, MTVs, contact points and a
+# ray cast as a table, and a picture of it as SVG (DEMO_SVG=path, default strike-demo.svg).
+# The interactive LÖVE demo is not written yet.
+DEMO_LUA ?= $(firstword $(foreach vm,luajit lua5.4 lua5.3 lua5.2 lua5.1 lua,$(shell command -v $(vm) 2>/dev/null)))
+DEMO_SVG ?= strike-demo.svg
+
+demo:
+	@$(DEMO_LUA) examples/demo.lua $(DEMO_SVG)

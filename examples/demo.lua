@@ -1,0 +1,131 @@
+--- The headless demo: a small scene, its collisions, MTVs, contact points and a ray cast,
+--- reported as a table and drawn to an SVG file. Plain Lua, every VM:
+---   lua examples/demo.lua [path.svg]        (or `make demo`)
+--- As a module, `require('examples.demo').run(path, write)` builds the same scene, writes
+--- the SVG to `path` and sends the report, line by line, to `write` (default: io.write).
+package.path = './?.lua;./?/init.lua;' .. package.path
+local S = require('strike')
+local H, T = S.hapes, S.trikers
+
+local demo = {}
+
+--- The scene: named bodies, in drawing order.
+---@return table[] list of { name =, body = }
+function demo.scene()
+  return {
+    { name = 'floor', body = T.Collider(H.Rectangle(200, 380, 300, 40), H.Rectangle(500, 380, 300, 40)) },
+    { name = 'crate', body = T.Rectangle(180, 338, 60, 50) },
+    { name = 'tilted crate', body = T.Rectangle(420, 330, 60, 60, 0.6) },
+    { name = 'ball', body = T.Circle(560, 338, 26) },
+    { name = 'L block', body = T.Concave(80, 120, 200, 120, 200, 160, 120, 160, 120, 260, 80, 260) },
+    { name = 'capsule', body = T.Capsule(185, 230, 40, 110, 0.4) },
+    { name = 'hexagon', body = T.RegularPolygon(330, 200, 6, 50, 0.2) },
+    { name = 'pentagon', body = T.RegularPolygon(400, 170, 5, 45) },
+    { name = 'hill', body = T.Chain(600, 260, 660, 220, 720, 240, 780, 200) },
+    { name = 'pebble', body = T.Circle(700, 222, 14) },
+  }
+end
+
+local function fmt(v) return ('%.1f'):format(v) end
+
+-- The SVG elements of one body.
+local function bodySVG(out, body, colour)
+  for s in body:elems() do
+    if s.kind == 'circle' then
+      local x, y = s:getCentroid()
+      out[#out + 1] = ('<circle class="shape" cx="%s" cy="%s" r="%s" fill="%s" fill-opacity="0.35" stroke="%s"/>')
+        :format(fmt(x), fmt(y), fmt(s:getRadius()), colour, colour)
+    else
+      local v, n = s:getVertices()
+      local pts = {}
+      for i = 1, n do pts[i] = fmt(v[2 * i - 1]) .. ',' .. fmt(v[2 * i]) end
+      if n == 2 then
+        out[#out + 1] = ('<polyline class="shape" points="%s" fill="none" stroke="%s" stroke-width="3"/>')
+          :format(table.concat(pts, ' '), colour)
+      else
+        out[#out + 1] = ('<polygon class="shape" points="%s" fill="%s" fill-opacity="0.35" stroke="%s"/>')
+          :format(table.concat(pts, ' '), colour, colour)
+      end
+    end
+  end
+end
+
+local COLOURS = { '#7a8a99', '#d98c3f', '#c9663d', '#3f7fd9', '#8f5fc9', '#3fb58f', '#d9b23f', '#c93f6f',
+  '#5f8f3f', '#3fa9c9' }
+
+--- Build the scene, report it through `write` and draw it to the SVG file at `path`.
+---@param path string @param write function|nil
+---@return table summary { pairs = n, collisions = n, contacts = n, shapes = n, rayHit = name or nil }
+function demo.run(path, write)
+  write = write or io.write
+  local scene = demo.scene()
+  local svg = { '<?xml version="1.0" encoding="UTF-8"?>',
+    '<svg xmlns="http://www.w3.org/2000/svg" width="840" height="440" viewBox="0 0 840 440">',
+    '<defs><marker id="arrow" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="6" markerHeight="6"'
+      .. ' orient="auto"><path d="M0,0 L10,5 L0,10 z" fill="#e02020"/></marker></defs>',
+    '<rect width="840" height="440" fill="#fbfaf7"/>' }
+  local summary = { pairs = 0, collisions = 0, contacts = 0, shapes = 0 }
+  for i, item in ipairs(scene) do
+    bodySVG(svg, item.body, COLOURS[i])
+    summary.shapes = summary.shapes + item.body:getShapeCount()
+  end
+  write(('%-14s %-14s %-9s %-18s %-7s %s\n'):format('first', 'second', 'collides', 'MTV (x, y)', 'depth',
+    'contact points'))
+  for i = 1, #scene do
+    for j = i + 1, #scene do
+      local a, b = scene[i], scene[j]
+      if S.aabb(a.body, b.body) then
+        summary.pairs = summary.pairs + 1
+        local m = S.triking(a.body, b.body)
+        if m then
+          summary.collisions = summary.collisions + 1
+          local c = S.ite(m)
+          local pts = {}
+          for k = 1, c.count do
+            pts[k] = ('(%s, %s)'):format(fmt(c[k].x), fmt(c[k].y))
+            summary.contacts = summary.contacts + 1
+            svg[#svg + 1] = ('<circle class="contact" cx="%s" cy="%s" r="4" fill="#20a040"/>')
+              :format(fmt(c[k].x), fmt(c[k].y))
+          end
+          local x, y = m.collidedShape:getCentroid()
+          svg[#svg + 1] = ('<line class="mtv" x1="%s" y1="%s" x2="%s" y2="%s" stroke="#e02020" stroke-width="2"'
+            .. ' marker-end="url(#arrow)"/>'):format(fmt(x), fmt(y), fmt(x + m.x * 4), fmt(y + m.y * 4))
+          write(('%-14s %-14s %-9s %-18s %-7s %s\n'):format(a.name, b.name, 'yes',
+            ('(%s, %s)'):format(fmt(m.x), fmt(m.y)), fmt(m.depth), table.concat(pts, ' ')))
+        else
+          write(('%-14s %-14s %-9s\n'):format(a.name, b.name, 'no'))
+        end
+      end
+    end
+  end
+  -- a ray from the top left, across the scene
+  local ox, oy, dx, dy = 20, 40, 1, 0.45
+  local best, bestName, hx, hy
+  for _, item in ipairs(scene) do
+    local t, x, y = item.body:rayCast(ox, oy, dx, dy)
+    if t and (not best or t < best) then best, bestName, hx, hy = t, item.name, x, y end
+  end
+  if best then
+    summary.rayHit = bestName
+    write(('ray from (%s, %s) along (%s, %s): first hit %s at (%s, %s), distance %s\n'):format(ox, oy, dx, dy,
+      bestName, fmt(hx), fmt(hy), fmt(best)))
+    svg[#svg + 1] = ('<line class="ray" x1="%s" y1="%s" x2="%s" y2="%s" stroke="#c020c0" stroke-dasharray="6 4"/>')
+      :format(ox, oy, fmt(hx), fmt(hy))
+    svg[#svg + 1] = ('<circle class="hit" cx="%s" cy="%s" r="5" fill="#c020c0"/>'):format(fmt(hx), fmt(hy))
+  else
+    write('ray: no hit\n')
+  end
+  svg[#svg + 1] = '</svg>'
+  local f = assert(io.open(path, 'w'))
+  f:write(table.concat(svg, '\n'), '\n')
+  f:close()
+  write(('%d pairs tested, %d collisions, %d contact points; picture written to %s\n'):format(summary.pairs,
+    summary.collisions, summary.contacts, path))
+  return summary
+end
+
+if ... == nil or ... == arg[1] then -- run as a script (not required as a module)
+  demo.run(arg[1] or 'strike-demo.svg')
+end
+
+return demo
