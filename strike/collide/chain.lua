@@ -37,9 +37,8 @@ local huge = math.huge
 
 local chain = {}
 
---- Slack of the admissibility tests, on cross products of unit vectors (sines).
-chain.TOL = 1e-12
-local TOL = chain.TOL
+-- Slack of the admissibility tests, on cross products of unit vectors (sines).
+local TOL = 1e-12
 
 -- Is m (unit, from S toward the other shape) admissible for S? (S is refreshed.)
 local function admissible(S, mx, my)

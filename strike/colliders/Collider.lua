@@ -31,7 +31,6 @@ Collider.name = 'Collider'
 
 local function isShape(v) return type(v) == 'table' and getmetatable(v) ~= nil and Object.is(v, Shape) end
 local function isCollider(v) return type(v) == 'table' and getmetatable(v) ~= nil and Object.is(v, Collider) end
-Collider._isShape, Collider._isCollider = isShape, isCollider
 
 --- A collider holding the given shapes and colliders (any number, nested to any depth).
 ---@param ... strike.Shape|strike.Collider

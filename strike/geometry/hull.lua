@@ -8,8 +8,6 @@ local sqrt = math.sqrt
 -- Relative tolerance for "collinear": |cross(a - o, b - o)| <= EPS * |a - o| * |b - o|,
 -- i.e. the sine of the turn is below EPS.
 local EPS = 1e-10
---- The collinearity tolerance (a sine).
-hull.EPS = EPS
 
 -- Left turn o -> a -> b, strictly beyond the tolerance.
 local function leftTurn(ox, oy, ax, ay, bx, by)
@@ -17,8 +15,6 @@ local function leftTurn(ox, oy, ax, ay, bx, by)
   local c = ux * vy - uy * vx
   return c > EPS * sqrt((ux * ux + uy * uy) * (vx * vx + vy * vy))
 end
---- leftTurn(ox, oy, ax, ay, bx, by): o -> a -> b turns left, beyond the tolerance.
-hull.leftTurn = leftTurn
 
 --- Hull of the points (xs[i], ys[i]), i = 1..n, in positive winding (positive shoelace
 --- area), without duplicate or collinear vertices.
