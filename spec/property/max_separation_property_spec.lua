@@ -6,20 +6,24 @@ local PRNG = require('spec.helpers.prng')
 
 local SEED = PRNG.seedFromEnv(777)
 
--- The O(n * m) definition: max over A's faces of min over B's vertices.
+-- The O(n * m) definition: max over A's faces of min over B's vertices, the lowest face
+-- among ties; and the lowest face that separates (s >= 0) with its separation, if any.
 local function fullScan(A, B)
-  local best, bi = -math.huge, 1
+  local best, bi, firstS, firstI = -math.huge, 1, nil, nil
   for i = 1, A._n do
-    local nx, ny = A._wnx[i], A._wny[i]
+    local nx, ny = A:getNormal(i)
     local s = math.huge
     for j = 1, B._n do
-      local p = nx * B._wx[j] + ny * B._wy[j]
+      local x, y = B:getVertex(j)
+      local p = nx * x + ny * y
       if p < s then s = p end
     end
-    s = s - A._wd[i]
+    local ax, ay = A:getVertex(i)
+    s = s - (nx * ax + ny * ay)
     if s > best then best, bi = s, i end
+    if s >= 0 and not firstI then firstS, firstI = s, i end
   end
-  return best, bi
+  return best, bi, firstS, firstI
 end
 
 -- An angle: often a multiple of a quarter turn, so that edges of the two shapes are
@@ -59,21 +63,65 @@ for _, variant in ipairs({ 'maxSeparationWalk', 'maxSeparationScan' }) do
         local A, B = randomShape(rng), randomShape(rng)
         A:getBbox()
         B:getBbox()
-        local want, wantI = fullScan(A, B)
+        local want, wantI, firstS, firstI = fullScan(A, B)
         local got, gotI = maxSeparation(A, B)
         if want < 0 then
-          assert(got == want, ('seed %d case %d: walked %.17g (face %d), full scan %.17g (face %d)')
+          -- overlapping: the same largest separation, from the same face (ties included)
+          assert(got == want and gotI == wantI, ('seed %d case %d: got %.17g (face %d), full scan %.17g (face %d)')
             :format(SEED, case, got, gotI, want, wantI))
         else
-          -- separated: it stops at the first separating face, which the full scan confirms
-          assert(got >= 0, ('seed %d case %d: walked %.17g but the full scan separates at %.17g')
-            :format(SEED, case, got, want))
-          local nx, ny = A._wnx[gotI], A._wny[gotI]
-          local s = math.huge
-          for j = 1, B._n do s = math.min(s, nx * B._wx[j] + ny * B._wy[j]) end
-          assert(s - A._wd[gotI] == got, ('seed %d case %d: face %d does not separate'):format(SEED, case, gotI))
+          -- separated: it stops at the first separating face, the same on every VM
+          assert(got == firstS and gotI == firstI,
+            ('seed %d case %d: got %.17g (face %d), first separating face %d at %.17g')
+            :format(SEED, case, got, gotI, firstI, firstS))
         end
       end
     end)
   end)
 end
+
+describe('centrally symmetric polygons', function()
+  it('break ties like the face-by-face scan (the lowest face wins)', function()
+    local H = S.hapes
+    local pairsList = {
+      { H.Rectangle(0, 0, 10, 10), H.Rectangle(0, 0, 10, 10) },          -- every face ties
+      { H.Rectangle(0, 0, 10, 10), H.Rectangle(0, 0, 4, 4) },
+      { H.RegularPolygon(5, 5, 8, 10), H.RegularPolygon(5, 5, 8, 10) },
+      { H.Rectangle(0, 0, 10, 20), H.Rectangle(0, 0, 20, 10) },
+      { H.Edge(-5, 0, 5, 0), H.Rectangle(0, 0, 4, 4) },                  -- both edge faces tie
+      { H.Rectangle(0, 0, 10, 10), H.Rectangle(20, 0, 10, 10) },         -- separated
+      { H.Rectangle(0, 0, 10, 10), H.Rectangle(-20, 0, 10, 10) },        -- separated, second half
+    }
+    for k, p in ipairs(pairsList) do
+      for _, variant in ipairs({ 'maxSeparationWalk', 'maxSeparationScan' }) do
+        local A, B = p[1], p[2]
+        local want, wantI, firstS, firstI = fullScan(A, B)
+        if firstI then want, wantI = firstS, firstI end
+        local got, gotI = sat[variant](A, B)
+        assert(got == want and gotI == wantI,
+          ('%s, pair %d: got %.17g (face %d), want %.17g (face %d)'):format(variant, k, got, gotI, want, wantI))
+      end
+    end
+  end)
+
+  it('are recognised, with opposite normals exactly opposite, so the scan shares projections', function()
+    local cases = {
+      { S.hapes.Rectangle(3, 4, 10, 20, 0.3), 2 },
+      { S.hapes.RegularPolygon(1e3, -2e3, 8, 17, 1.1), 4 },
+      { S.hapes.RegularPolygon(0, 0, 16, 5), 8 },
+      { S.hapes.Edge(0, 0, 3, 1), 1 },
+      { S.hapes.ConvexPolygon(0, 0, 4, 0, 6, 3, 2, 3), 2 }, -- a parallelogram
+      { S.hapes.RegularPolygon(0, 0, 5, 10), 0 },            -- odd: never
+      { S.hapes.ConvexPolygon(0, 0, 4, 0, 5, 3, 1, 2), 0 },  -- a kite-ish quadrilateral
+    }
+    for k, c in ipairs(cases) do
+      local shape, half = c[1], c[2]
+      assert.equals(half, shape._half, 'case ' .. k)
+      for i = 1, half do
+        local ax, ay = shape:getNormal(i)
+        local bx, by = shape:getNormal(i + half)
+        assert(ax == -bx and ay == -by, ('case %d: normals %d and %d are not exactly opposite'):format(k, i, i + half))
+      end
+    end
+  end)
+end)

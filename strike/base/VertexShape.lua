@@ -2,19 +2,42 @@
 --- Geometry lives in flat number arrays with a count:
 ---   _lx, _ly    local vertices (relative to the centroid, unrotated, unscaled), positive winding
 ---   _lnx, _lny  local unit outward normals, normal i belongs to edge i (vertex i to vertex i+1)
----   _wx, _wy, _wnx, _wny and _minx.._maxy: world-space copies, refreshed when dirty;
----   _wd[i] = dot(normal i, vertex i): the offset of edge i's line along its normal.
+---   _w          world-space data, refreshed when dirty, in one array of 5n numbers: vertex
+---               i's record starts at k = 5i - 4 and holds x, y (w[k], w[k+1]), the unit
+---               normal of edge i (w[k+2], w[k+3]) and the offset of edge i's line along that
+---               normal, dot(normal i, vertex i) (w[k+4]). The narrow phase reads one
+---               contiguous array per shape, so that a test touches few cache lines.
+---   _minx.._maxy world-space bounds, refreshed with _w.
+---   _half       n / 2 when the polygon is centrally symmetric (normal i + n/2 is exactly
+---               -normal i: rectangles, even regular polygons, edges), else 0; the narrow
+---               phase then gets two faces' separations from one projection of the other shape.
 local ROOT = (...):match('^(.-)%.base%.[^%.]+$')
 local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
 
-local sqrt, huge = math.sqrt, math.huge
+local sqrt, huge, abs, floor = math.sqrt, math.huge, math.abs, math.floor
 local number = check.number
 
 ---@class strike.VertexShape : strike.Shape
 local VertexShape = Shape:extend()
 VertexShape.kind = 'polygon'
 VertexShape.name = 'VertexShape'
+
+-- Normals this close to antiparallel are made exactly antiparallel (a change far below
+-- any coordinate's rounding noise), so that opposite faces can share one projection.
+local ANTIPARALLEL = 1e-10
+
+-- n / 2 when every normal i + n/2 is (nearly) -normal i, snapping those to exactly -normal
+-- i; else 0 and the normals stay as they are.
+local function symmetricHalf(lnx, lny, n)
+  if n % 2 ~= 0 then return 0 end
+  local h = floor(n / 2)
+  for i = 1, h do
+    if abs(lnx[i] + lnx[i + h]) > ANTIPARALLEL or abs(lny[i] + lny[i + h]) > ANTIPARALLEL then return 0 end
+  end
+  for i = 1, h do lnx[i + h], lny[i + h] = -lnx[i], -lny[i] end
+  return h
+end
 
 --- Store world-space vertices xs, ys (count n, positive winding, validated) as local
 --- geometry about the centroid (cx, cy), with the given unscaled area.
@@ -34,7 +57,10 @@ function VertexShape:_setVertices(xs, ys, n, cx, cy, area)
     lnx[i], lny[i] = ey / l, -ex / l
   end
   self._n, self._lx, self._ly, self._lnx, self._lny = n, lx, ly, lnx, lny
-  self._wx, self._wy, self._wnx, self._wny, self._wd = {}, {}, {}, {}, {}
+  self._half = symmetricHalf(lnx, lny, n)
+  local w = {}
+  for k = 1, 5 * n do w[k] = 0 end
+  self._w = w
   self._area, self._radius = area, sqrt(r2)
   self:_setPose(cx, cy)
 end
@@ -44,20 +70,20 @@ function VertexShape:_refresh()
   local c, s, k = self._cos, self._sin, self._scale
   local x0, y0 = self._x, self._y
   local lx, ly, lnx, lny = self._lx, self._ly, self._lnx, self._lny
-  local wx, wy, wnx, wny, wd = self._wx, self._wy, self._wnx, self._wny, self._wd
+  local w = self._w
   local minx, miny, maxx, maxy = huge, huge, -huge, -huge
   local sc, ss = c * k, s * k
   for i = 1, n do
     local x, y = lx[i], ly[i]
     local px, py = x0 + sc * x - ss * y, y0 + ss * x + sc * y
-    wx[i], wy[i] = px, py
     if px < minx then minx = px end
     if px > maxx then maxx = px end
     if py < miny then miny = py end
     if py > maxy then maxy = py end
     x, y = lnx[i], lny[i]
     x, y = c * x - s * y, s * x + c * y
-    wnx[i], wny[i], wd[i] = x, y, x * px + y * py
+    local r = 5 * i - 4
+    w[r], w[r + 1], w[r + 2], w[r + 3], w[r + 4] = px, py, x, y, x * px + y * py
   end
   self._minx, self._miny, self._maxx, self._maxy = minx, miny, maxx, maxy
   self._dirty = false
@@ -78,7 +104,8 @@ function VertexShape:getVertexCount() return self._n end
 function VertexShape:getVertex(i)
   if not inRange(i, self._n) then return nil end
   if self._dirty then self:_refresh() end
-  return self._wx[i], self._wy[i]
+  local w, k = self._w, 5 * i - 4
+  return w[k], w[k + 1]
 end
 
 --- Edge i (vertex i to vertex i + 1, wrapping), as x1, y1, x2, y2; nil when out of range.
@@ -89,9 +116,8 @@ function VertexShape:getEdge(i)
   local n = self._n
   if not inRange(i, n) then return nil end
   if self._dirty then self:_refresh() end
-  local j = i < n and i + 1 or 1
-  local wx, wy = self._wx, self._wy
-  return wx[i], wy[i], wx[j], wy[j]
+  local w, k, l = self._w, 5 * i - 4, i < n and 5 * i + 1 or 1
+  return w[k], w[k + 1], w[l], w[l + 1]
 end
 
 --- Unit outward normal of edge i in world space; nil when out of range.
@@ -100,7 +126,8 @@ end
 function VertexShape:getNormal(i)
   if not inRange(i, self._n) then return nil end
   if self._dirty then self:_refresh() end
-  return self._wnx[i], self._wny[i]
+  local w, k = self._w, 5 * i - 4
+  return w[k + 2], w[k + 3]
 end
 
 --- World vertices as a flat list {x1, y1, x2, y2, ...}, ready for love.graphics.polygon.
@@ -110,9 +137,9 @@ end
 function VertexShape:getVertices(out)
   if self._dirty then self:_refresh() end
   out = out or {}
-  local n, wx, wy = self._n, self._wx, self._wy
+  local n, w = self._n, self._w
   for i = 1, n do
-    out[2 * i - 1], out[2 * i] = wx[i], wy[i]
+    out[2 * i - 1], out[2 * i] = w[5 * i - 4], w[5 * i - 3]
   end
   for i = #out, 2 * n + 1, -1 do out[i] = nil end
   return out, n
@@ -125,10 +152,10 @@ function VertexShape:project(nx, ny)
   number(nx, 'strike.Shape:project', 'nx')
   number(ny, 'strike.Shape:project', 'ny')
   if self._dirty then self:_refresh() end
-  local wx, wy = self._wx, self._wy
+  local w = self._w
   local lo, hi = huge, -huge
-  for i = 1, self._n do
-    local d = wx[i] * nx + wy[i] * ny
+  for k = 1, 5 * self._n, 5 do
+    local d = w[k] * nx + w[k + 1] * ny
     if d < lo then lo = d end
     if d > hi then hi = d end
   end
@@ -140,10 +167,11 @@ end
 ---@return integer
 function VertexShape:getSupport(nx, ny)
   if self._dirty then self:_refresh() end
-  local wx, wy = self._wx, self._wy
+  local w = self._w
   local best, bi = -huge, 1
   for i = 1, self._n do
-    local d = wx[i] * nx + wy[i] * ny
+    local k = 5 * i - 4
+    local d = w[k] * nx + w[k + 1] * ny
     if d > best then best, bi = d, i end
   end
   return bi
@@ -157,9 +185,9 @@ function VertexShape:containsPoint(x, y)
   x, y = Shape._point(x, y, 'strike.Shape:containsPoint')
   if self._dirty then self:_refresh() end
   if self._n < 3 then return false end
-  local wx, wy, wnx, wny = self._wx, self._wy, self._wnx, self._wny
-  for i = 1, self._n do
-    if (x - wx[i]) * wnx[i] + (y - wy[i]) * wny[i] >= 0 then return false end
+  local w = self._w
+  for k = 1, 5 * self._n, 5 do
+    if (x - w[k]) * w[k + 2] + (y - w[k + 1]) * w[k + 3] >= 0 then return false end
   end
   return true
 end
@@ -169,9 +197,8 @@ local function edgeIter(self, i)
   i = i + 1
   local n = self._n
   if i > n then return nil end
-  local j = i < n and i + 1 or 1
-  local wx, wy = self._wx, self._wy
-  return i, wx[i], wy[i], wx[j], wy[j]
+  local w, k, l = self._w, 5 * i - 4, i < n and 5 * i + 1 or 1
+  return i, w[k], w[k + 1], w[l], w[l + 1]
 end
 
 --- Iterate over the edges: `for i, x1, y1, x2, y2 in shape:ipairs() do`.
@@ -187,9 +214,8 @@ local function vecIter(self, i)
   i = i + 1
   local n = self._n
   if i > n then return nil end
-  local j = i < n and i + 1 or 1
-  local wx, wy = self._wx, self._wy
-  return i, wx[j] - wx[i], wy[j] - wy[i]
+  local w, k, l = self._w, 5 * i - 4, i < n and 5 * i + 1 or 1
+  return i, w[l] - w[k], w[l + 1] - w[k + 1]
 end
 
 --- Iterate over edge vectors: `for i, dx, dy in shape:vecs() do`. Allocates nothing.
@@ -204,10 +230,10 @@ end
 ---@return number
 function VertexShape:_farthest(px, py)
   if self._dirty then self:_refresh() end
-  local wx, wy = self._wx, self._wy
+  local w = self._w
   local best = 0
-  for i = 1, self._n do
-    local dx, dy = wx[i] - px, wy[i] - py
+  for k = 1, 5 * self._n, 5 do
+    local dx, dy = w[k] - px, w[k + 1] - py
     local d = dx * dx + dy * dy
     if d > best then best = d end
   end

@@ -31,10 +31,11 @@ end
 
 -- The face of polygon P whose normal is most aligned with (nx, ny), and that cosine.
 local function alignedFace(P, nx, ny)
-  local wnx, wny = P._wnx, P._wny
+  local w = P._w
   local best, bi = -huge, 1
   for i = 1, P._n do
-    local d = wnx[i] * nx + wny[i] * ny
+    local k = 5 * i - 4
+    local d = w[k + 2] * nx + w[k + 3] * ny
     if d > best then best, bi = d, i end
   end
   return bi, best
@@ -57,16 +58,16 @@ end
 -- Clip and keep, with R the reference polygon (face r) and I the incident one (face f).
 -- Returns the number of points written. `side` is 0 or 1 (see the header).
 local function clipFaces(out, R, r, I, f, side)
-  local rn = R._n
-  local r2 = r < rn and r + 1 or 1
-  local v1x, v1y, v2x, v2y = R._wx[r], R._wy[r], R._wx[r2], R._wy[r2]
-  local nx, ny = R._wnx[r], R._wny[r]
+  local rw, rk = R._w, 5 * r - 4
+  local rl = r < R._n and rk + 5 or 1
+  local v1x, v1y, v2x, v2y = rw[rk], rw[rk + 1], rw[rl], rw[rl + 1]
+  local nx, ny = rw[rk + 2], rw[rk + 3]
   local tx, ty = v2x - v1x, v2y - v1y
   local len = sqrt(tx * tx + ty * ty)
   tx, ty = tx / len, ty / len
-  local in_ = I._n
-  local f2 = f < in_ and f + 1 or 1
-  local ax, ay, bx, by = I._wx[f], I._wy[f], I._wx[f2], I._wy[f2]
+  local iw, ik = I._w, 5 * f - 4
+  local il = f < I._n and ik + 5 or 1
+  local ax, ay, bx, by = iw[ik], iw[ik + 1], iw[il], iw[il + 1]
   local ca, cb = 0, 1 -- which corner each end is (see the header)
   -- side plane 1: dot(t, p - v1) >= 0
   local lo = tx * v1x + ty * v1y
@@ -95,15 +96,17 @@ end
 
 -- The feature of polygon P nearest the point (cx, cy) as an id: 2 * face or 2 * vertex + 1.
 local function circleFeature(P, cx, cy)
-  local n, wx, wy, wnx, wny = P._n, P._wx, P._wy, P._wnx, P._wny
+  local n, w = P._n, P._w
   local best, bi = -huge, 1
   for i = 1, n do
-    local s = wnx[i] * (cx - wx[i]) + wny[i] * (cy - wy[i])
+    local k = 5 * i - 4
+    local s = w[k + 2] * (cx - w[k]) + w[k + 3] * (cy - w[k + 1])
     if s > best then best, bi = s, i end
   end
   local j = bi < n and bi + 1 or 1
-  if (cx - wx[bi]) * (wx[j] - wx[bi]) + (cy - wy[bi]) * (wy[j] - wy[bi]) <= 0 then return 2 * bi + 1 end
-  if (cx - wx[j]) * (wx[bi] - wx[j]) + (cy - wy[j]) * (wy[bi] - wy[j]) <= 0 then return 2 * j + 1 end
+  local x1, y1, x2, y2 = w[5 * bi - 4], w[5 * bi - 3], w[5 * j - 4], w[5 * j - 3]
+  if (cx - x1) * (x2 - x1) + (cy - y1) * (y2 - y1) <= 0 then return 2 * bi + 1 end
+  if (cx - x2) * (x1 - x2) + (cy - y2) * (y1 - y2) <= 0 then return 2 * j + 1 end
   return 2 * bi
 end
 
@@ -131,18 +134,21 @@ function contact.manifold(mtv, out)
   local fb, alignB = alignedFace(B, -nx, -ny)
   local k
   if alignB > alignA + 1e-6 then
-    k = clipFaces(out, B, fb, A, (alignedFace(A, -B._wnx[fb], -B._wny[fb])), 1)
+    local w = B._w
+    k = clipFaces(out, B, fb, A, (alignedFace(A, -w[5 * fb - 2], -w[5 * fb - 1])), 1)
   else
-    k = clipFaces(out, A, fa, B, (alignedFace(B, -A._wnx[fa], -A._wny[fa])), 0)
+    local w = A._w
+    k = clipFaces(out, A, fa, B, (alignedFace(B, -w[5 * fa - 2], -w[5 * fa - 1])), 0)
   end
   if k == 0 then
     -- Round-off left nothing behind the face: report the deepest vertex of B.
+    local w = B._w
     local best, bj = huge, 1
     for j = 1, B._n do
-      local p = nx * B._wx[j] + ny * B._wy[j]
+      local p = nx * w[5 * j - 4] + ny * w[5 * j - 3]
       if p < best then best, bj = p, j end
     end
-    setPoint(out, 1, B._wx[bj] + nx * depth / 2, B._wy[bj] + ny * depth / 2, depth, bj)
+    setPoint(out, 1, w[5 * bj - 4] + nx * depth / 2, w[5 * bj - 3] + ny * depth / 2, depth, bj)
     k = 1
   end
   return k

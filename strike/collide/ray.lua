@@ -105,12 +105,13 @@ local unit = ray.unit
 ---@return number|nil lo, number hi, integer fin, integer fout
 function ray.polygon(s, ox, oy, ux, uy)
   if s._dirty then s:_refresh() end
-  local wnx, wny, wd = s._wnx, s._wny, s._wd
+  local w = s._w
   local tin, tout, fin, fout = -huge, huge, 0, 0
   for i = 1, s._n do
-    local nx, ny = wnx[i], wny[i]
+    local k = 5 * i - 4
+    local nx, ny = w[k + 2], w[k + 3]
     local den = nx * ux + ny * uy
-    local num = wd[i] - (nx * ox + ny * oy)
+    local num = w[k + 4] - (nx * ox + ny * oy)
     if den < 0 then -- entering: t >= num / den
       local t = num / den
       if t > tin then
@@ -141,9 +142,9 @@ local polygonClip = ray.polygon
 ---@return number|nil lo, number hi, number cross
 function ray.segment(s, ox, oy, ux, uy)
   if s._dirty then s:_refresh() end
-  local wx, wy = s._wx, s._wy
-  local ax, ay = wx[1] - ox, wy[1] - oy -- p1 relative to the origin
-  local ex, ey = wx[2] - wx[1], wy[2] - wy[1]
+  local w = s._w -- p1 = (w[1], w[2]), p2 = (w[6], w[7])
+  local ax, ay = w[1] - ox, w[2] - oy -- p1 relative to the origin
+  local ex, ey = w[6] - w[1], w[7] - w[2]
   -- o + t u = p1 + s e: t = cross(a, e) / cross(u, e), s = cross(a, u) / cross(u, e).
   -- (e is scaled to components of at most 1, so that cross(a, e) cannot overflow.)
   local k = abs(ex)
@@ -160,7 +161,7 @@ function ray.segment(s, ox, oy, ux, uy)
   end
   if cau ~= 0 then return nil end -- parallel, on another line
   local t1 = ax * ux + ay * uy
-  local t2 = (wx[2] - ox) * ux + (wy[2] - oy) * uy
+  local t2 = (w[6] - ox) * ux + (w[7] - oy) * uy
   if t1 > t2 then t1, t2 = t2, t1 end
   if not (t2 >= 0) or t2 == huge then return nil end -- luacheck: ignore 581 (NaN reads as a miss)
   return t1, t2, 0
@@ -279,9 +280,9 @@ function ray.cast(s, ox, oy, ux, uy, maxDistance)
     if lo >= 0 then t = lo else t = hi end
     if t > maxDistance then return nil end
     if cross > 0 then -- (the sign of cross(u, e) is the sign of dot(u, normal 1))
-      nx, ny = -s._wnx[1], -s._wny[1]
+      nx, ny = -s._w[3], -s._w[4]
     elseif cross < 0 then
-      nx, ny = s._wnx[1], s._wny[1]
+      nx, ny = s._w[3], s._w[4]
     elseif lo >= 0 then
       nx, ny = -ux, -uy
     else
@@ -293,7 +294,7 @@ function ray.cast(s, ox, oy, ux, uy, maxDistance)
     local f
     if lo >= 0 then t, f = lo, fin else t, f = hi, fout end
     if t > maxDistance then return nil end
-    nx, ny = s._wnx[f], s._wny[f]
+    nx, ny = s._w[5 * f - 2], s._w[5 * f - 1]
   end
   if t == 0 then t = 0.0 end
   return t, ox + t * ux, oy + t * uy, nx, ny

@@ -18,8 +18,8 @@ local sqrt, huge, abs = math.sqrt, math.huge, math.abs
 
 -- The outermost collider of a shape, or the shape itself.
 local function root(s)
-  local p = s.parent
-  while p do s, p = p, p.parent end
+  local p = rawget(s, 'parent') -- (rawget: no metatable walk when there is none)
+  while p do s, p = p, rawget(p, 'parent') end
   return s
 end
 --- root(shape): the outermost collider holding the shape, or the shape itself.
@@ -51,33 +51,37 @@ sat.result = result
 -- An Edge's two faces point opposite ways: a half turn, after which the old support is
 -- the new maximum, so each of them gets a full scan instead.
 local function maxSeparationWalk(A, B)
-  local anx, any, ad = A._wnx, A._wny, A._wd
-  local bx, by, nb = B._wx, B._wy, B._n
+  local a, b, na, nb = A._w, B._w, A._n, B._n
   local best, bi, j = -huge, 1, 1
   local pj
-  local first = A._n == 2 and 2 or 1 -- faces scanned in full
+  local first = na == 2 and 2 or 1 -- faces scanned in full
   for i = 1, first do
-    local nx, ny = anx[i], any[i]
-    j, pj = 1, nx * bx[1] + ny * by[1]
-    for k = 2, nb do
-      local p = nx * bx[k] + ny * by[k]
-      if p < pj then j, pj = k, p end
+    local k = 5 * i - 4
+    local nx, ny = a[k + 2], a[k + 3]
+    j, pj = 1, nx * b[1] + ny * b[2]
+    for jj = 2, nb do
+      local r = 5 * jj - 4
+      local p = nx * b[r] + ny * b[r + 1]
+      if p < pj then j, pj = jj, p end
     end
-    local s = pj - ad[i]
+    local s = pj - a[k + 4]
     if s > best then
       best, bi = s, i
       if s >= 0 then return s, i end
     end
   end
-  for i = first + 1, A._n do
-    local nx, ny = anx[i], any[i]
-    pj = nx * bx[j] + ny * by[j]
+  for i = first + 1, na do
+    local k = 5 * i - 4
+    local nx, ny = a[k + 2], a[k + 3]
+    local r = 5 * j - 4
+    pj = nx * b[r] + ny * b[r + 1]
     while true do
-      local k = j < nb and j + 1 or 1
-      local p = nx * bx[k] + ny * by[k]
-      if p < pj then j, pj = k, p else break end
+      local jj = j < nb and j + 1 or 1
+      r = 5 * jj - 4
+      local p = nx * b[r] + ny * b[r + 1]
+      if p < pj then j, pj = jj, p else break end
     end
-    local s = pj - ad[i]
+    local s = pj - a[k + 4]
     if s > best then
       best, bi = s, i
       if s >= 0 then return s, i end
@@ -92,18 +96,48 @@ end
 -- 28 traces here, out of LuaJIT's default 512 KB area that the whole game shares), while
 -- an interpreter pays for every call to math.min and prefers the walk (Lua 5.4, 8-gons:
 -- 308k against 164k pairs/s).
-local min = math.min
+local min, max = math.min, math.max
 local function maxSeparationScan(A, B)
-  local anx, any, ad = A._wnx, A._wny, A._wd
-  local bx, by, nb = B._wx, B._wy, B._n
+  local a, b, na, nb = A._w, B._w, A._n, B._n
+  local last = 5 * nb - 4 -- B's last vertex record
   local best, bi = -huge, 1
-  for i = 1, A._n do
-    local nx, ny = anx[i], any[i]
-    local s = huge
-    for j = 1, nb do
-      s = min(s, nx * bx[j] + ny * by[j])
+  local h = A._half
+  if h > 0 then
+    -- Centrally symmetric A: face i + h has the normal -n_i, so one projection of B on n_i
+    -- gives both faces: min for face i, -max for face i + h. The result is the one of the
+    -- face-by-face scan: the largest separation, the lowest face among ties, and when
+    -- something separates, the lowest separating face (face i < h + 1 <= any face i + h).
+    local sepI, sepS = 0, 0 -- the first separating face of the second half, if any
+    for i = 1, h do
+      local k = 5 * i - 4
+      local nx, ny = a[k + 2], a[k + 3]
+      local lo, hi = huge, -huge
+      for r = 1, last, 5 do
+        local p = nx * b[r] + ny * b[r + 1]
+        lo, hi = min(lo, p), max(hi, p)
+      end
+      local s = lo - a[k + 4]
+      if s >= 0 then return s, i end
+      if s > best or (s == best and i < bi) then best, bi = s, i end
+      local f = i + h
+      s = -hi - a[5 * f]
+      if s >= 0 then
+        if sepI == 0 then sepI, sepS = f, s end
+      elseif s > best or (s == best and f < bi) then
+        best, bi = s, f
+      end
     end
-    s = s - ad[i]
+    if sepI > 0 then return sepS, sepI end
+    return best, bi
+  end
+  for i = 1, na do
+    local k = 5 * i - 4
+    local nx, ny = a[k + 2], a[k + 3]
+    local s = huge
+    for r = 1, last, 5 do
+      s = min(s, nx * b[r] + ny * b[r + 1])
+    end
+    s = s - a[k + 4]
     if s > best then
       best, bi = s, i
       if s >= 0 then return s, i end
@@ -131,33 +165,37 @@ function sat.polygonPolygon(A, B, out)
   if A._dirty then A:_refresh() end
   if B._dirty then B:_refresh() end
   local sA, iA = maxSeparation(A, B)
-  if sA >= 0 then return result(out, A, B, A._wnx[iA], A._wny[iA], -sA, iA) end
+  local a = A._w
+  if sA >= 0 then return result(out, A, B, a[5 * iA - 2], a[5 * iA - 1], -sA, iA) end
   local sB, iB = maxSeparation(B, A)
   if sB > sA then
-    return result(out, A, B, -B._wnx[iB], -B._wny[iB], -sB, -iB)
+    local b = B._w
+    return result(out, A, B, -b[5 * iB - 2], -b[5 * iB - 1], -sB, -iB)
   end
-  return result(out, A, B, A._wnx[iA], A._wny[iA], -sA, iA)
+  return result(out, A, B, a[5 * iA - 2], a[5 * iA - 1], -sA, iA)
 end
 
 -- Polygon P against circle C; when `flip`, report it as C against P.
 local function polygonCircle(P, C, out, flip)
   if P._dirty then P:_refresh() end
   local cx, cy, r = C._x, C._y, C._r * C._scale
-  local n, wx, wy, wnx, wny = P._n, P._wx, P._wy, P._wnx, P._wny
+  local n, w = P._n, P._w
   local best, bi = -huge, 1
   for i = 1, n do
-    local s = wnx[i] * (cx - wx[i]) + wny[i] * (cy - wy[i])
+    local k = 5 * i - 4
+    local s = w[k + 2] * (cx - w[k]) + w[k + 3] * (cy - w[k + 1])
     if s > best then
       best, bi = s, i
       if s >= r then break end
     end
   end
-  local nx, ny, depth, edge = wnx[bi], wny[bi], r - best, bi
+  local k = 5 * bi - 4
+  local nx, ny, depth, edge = w[k + 2], w[k + 3], r - best, bi
   if (best > 0 or n == 2) and best < r then
     -- the centre is outside face bi (or, for an edge, anywhere on its line): the closest
     -- feature is the face or one of its ends
-    local j = bi < n and bi + 1 or 1
-    local x1, y1, x2, y2 = wx[bi], wy[bi], wx[j], wy[j]
+    local l = bi < n and k + 5 or 1
+    local x1, y1, x2, y2 = w[k], w[k + 1], w[l], w[l + 1]
     local vx, vy
     if (cx - x1) * (x2 - x1) + (cy - y1) * (y2 - y1) <= 0 then
       vx, vy = x1, y1

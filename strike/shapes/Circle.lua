@@ -96,11 +96,11 @@ local function axisToward(self, other)
   if other and other._n then
     if other._dirty then other:_refresh() end
     local best = math.huge
-    local wx, wy = other._wx, other._wy
-    for i = 1, other._n do
-      local dx, dy = wx[i] - cx, wy[i] - cy
+    local w = other._w
+    for k = 1, 5 * other._n, 5 do
+      local dx, dy = w[k] - cx, w[k + 1] - cy
       local d = dx * dx + dy * dy
-      if d < best then best, tx, ty = d, wx[i], wy[i] end
+      if d < best then best, tx, ty = d, w[k], w[k + 1] end
     end
   elseif other and other._x then
     tx, ty = other._x, other._y
