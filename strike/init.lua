@@ -96,18 +96,38 @@ end
 ---@param out strike.MTV|nil filled and returned on a collision; its contents are unspecified after false
 ---@return strike.MTV|false
 function S.triking(collider1, collider2, out)
-  local l1, n1, l2, n2
-  -- (colliders inline: this is the hot path)
-  if type(collider1) == 'table' and collider1._leavesOK then
-    l1, n1 = collider1._leaves, collider1._nleaves
-  else
-    l1, n1 = leavesOf(collider1, single1, 'strike.triking', 1)
+  -- One leaf each, the common case: straight-line code (LuaJIT traces one-trip loops
+  -- badly), tested into the caller's `out` when there is one. `_single` is a collider's
+  -- only leaf while its leaf list is current; a bare shape is its own.
+  local s1 = type(collider1) == 'table' and collider1._single
+  if s1 == nil and dispatch[collider1.kind] then s1 = collider1 end
+  local s2 = false
+  if s1 then
+    s2 = type(collider2) == 'table' and collider2._single
+    if s2 == nil and dispatch[collider2.kind] then s2 = collider2 end
   end
-  if type(collider2) == 'table' and collider2._leavesOK then
-    l2, n2 = collider2._leaves, collider2._nleaves
-  else
-    l2, n2 = leavesOf(collider2, single2, 'strike.triking', 2)
+  if s2 then
+    if out ~= nil and type(out) ~= 'table' then checkOut('strike.triking', out, 3) end
+    -- (rawget: a collider without a parent has no such field; no metatable walk)
+    local r1, r2 = collider1, collider2
+    local p = rawget(r1, 'parent')
+    while p do r1, p = p, rawget(p, 'parent') end
+    p = rawget(r2, 'parent')
+    while p do r2, p = p, rawget(p, 'parent') end
+    if r1 == r2 then return false end
+    if s1._dirty then s1:_refresh() end
+    if s2._dirty then s2:_refresh() end
+    if min(s1._maxx, s2._maxx) < max(s1._minx, s2._minx) or min(s1._maxy, s2._maxy) < max(s1._miny, s2._miny) then
+      return false -- the bounds do not even meet
+    end
+    local m = dispatch[s1.kind][s2.kind](s1, s2, out or tmpA)
+    if not (m.depth > 0) then return false end -- luacheck: ignore 581 (NaN reads as no collision)
+    if not out then out = MTV.set(MTV(), m) end
+    out.collider, out.collided = r1, r2
+    return out
   end
+  local l1, n1 = leavesOf(collider1, single1, 'strike.triking', 1)
+  local l2, n2 = leavesOf(collider2, single2, 'strike.triking', 2)
   if out ~= nil and type(out) ~= 'table' then checkOut('strike.triking', out, 3) end
   local r1, r2 = collider1, collider2
   while r1.parent do r1 = r1.parent end
@@ -115,22 +135,6 @@ function S.triking(collider1, collider2, out)
   if r1 == r2 then -- every leaf pair would share a root
     single1[1], single2[1] = nil, nil
     return false
-  end
-  if n1 == 1 and n2 == 1 then
-    -- One shape each, the common case: straight-line code (LuaJIT traces one-trip loops
-    -- badly), tested into the caller's `out` when there is one.
-    local a, b = l1[1], l2[1]
-    single1[1], single2[1] = nil, nil
-    if a._dirty then a:_refresh() end
-    if b._dirty then b:_refresh() end
-    if min(a._maxx, b._maxx) < max(a._minx, b._minx) or min(a._maxy, b._maxy) < max(a._miny, b._miny) then
-      return false -- the bounds do not even meet
-    end
-    local m = dispatch[a.kind][b.kind](a, b, out or tmpA)
-    if not (m.depth > 0) then return false end -- luacheck: ignore 581 (NaN reads as no collision)
-    if not out then out = MTV.set(MTV(), m) end
-    out.collider, out.collided = r1, r2
-    return out
   end
   -- Test into `tmp`; a deeper result becomes `best` and the other buffer becomes `tmp`.
   -- With an `out` table it is one of the two buffers, so the usual single hit needs no copy.

@@ -26,6 +26,9 @@ function Shape:_setPose(x, y)
   self.kind = self.kind -- an own copy of the class's kind: the dispatch reads it every test
   self._x, self._y = x, y
   self._angle, self._cos, self._sin, self._scale = 0, 1, 0, 1
+  -- (the bounds get their slots now, so the object's fields are laid out once, at
+  -- construction, instead of growing again at the first refresh)
+  self._minx, self._miny, self._maxx, self._maxy = x, y, x, y
   self._dirty = true
 end
 

@@ -3,7 +3,8 @@
 --- shapes, cached and recomputed on the next query after anything in the tree changes.
 ---
 --- Cache protocol, three flags, each recomputed lazily and bottom-up:
----   `_leavesOK`  the flat leaf list (cleared by add, remove, consolidate);
+---   `_leavesOK`  the flat leaf list (cleared by add, remove, consolidate), with `_single`:
+---                its only leaf when it has exactly one, else false (S.triking's fast path);
 ---   `_massOK`    area and centroid (cleared also when any leaf moves);
 ---   `_clean`     bounds and radius (cleared also when any leaf moves).
 --- For each flag: when a collider's flag is false, so is every enclosing collider's (the
@@ -37,6 +38,9 @@ local function isCollider(v) return type(v) == 'table' and getmetatable(v) ~= ni
 function Collider:new(...)
   self.shapes = {}
   self._angle = 0
+  -- (the cache fields get their slots now, so the object's fields are laid out once, at
+  -- construction; see the cache protocol above)
+  self._leavesOK, self._massOK, self._clean, self._single = false, false, false, false
   self:add(...)
 end
 
@@ -44,7 +48,7 @@ end
 local function invalidate(self)
   local p = self
   while p and (p._leavesOK or p._massOK or p._clean) do
-    p._leavesOK, p._massOK, p._clean = false, false, false
+    p._leavesOK, p._massOK, p._clean, p._single = false, false, false, false
     p = p.parent
   end
 end
@@ -144,6 +148,7 @@ local function refreshLeaves(self)
   for i = #leaves, nl + 1, -1 do leaves[i] = nil end
   self._nleaves = nl
   if not self._angle then self._angle = 0 end
+  self._single = nl == 1 and leaves[1]
   self._leavesOK = true
 end
 Collider._refreshLeaves = refreshLeaves
@@ -456,9 +461,11 @@ end
 function Collider:copy(x, y, angle)
   local c = setmetatable({}, getmetatable(self))
   for k, v in pairs(self) do
-    if k ~= 'parent' and k ~= 'shapes' and k ~= '_leaves' and k ~= '_leafPos' then c[k] = Shape._clone(v) end
+    if k ~= 'parent' and k ~= 'shapes' and k ~= '_leaves' and k ~= '_leafPos' and k ~= '_single' then
+      c[k] = Shape._clone(v)
+    end
   end
-  c._leavesOK, c._massOK, c._clean, c.shapes = false, false, false, {}
+  c._leavesOK, c._massOK, c._clean, c._single, c.shapes = false, false, false, false, {}
   local shapes = self.shapes or {}
   for i = 1, #shapes do
     local child = shapes[i]:copy()
