@@ -5,3 +5,5 @@ ignore = { '212/self' } -- methods keep `self` even when a subclass needs no sta
 files['spec'] = { std = 'min+busted' }
 files['.busted'] = { std = 'min' }
 exclude_files = { '.git' }
+-- The LÖVE demo (love demo): LÖVE's globals, and only its callbacks defined.
+files['demo/'] = { std = 'min+love' }

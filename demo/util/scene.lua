@@ -1,0 +1,53 @@
+--- What the scene modules (scenes/*.lua) have in common: drawing on screen, the R reset,
+--- releasing a held key and the screenshot probes. Pure Lua; `love` is touched only when
+--- a scene is drawn on screen.
+local ROOT = (...):match('^(.-)[^%.]+$')
+local layout = require(ROOT .. 'layout')
+local probe = require(ROOT .. 'probe')
+local LovePainter = require(ROOT .. 'lovepaint')
+
+local scene = {}
+
+--- Draw scene M's state on screen (LÖVE only): M.paint with a LÖVE painter, made once.
+---@param M table the scene module @param state table
+function scene.draw(M, state)
+  state.painter = state.painter or LovePainter.new(state.S)
+  M.paint(state, state.painter)
+end
+
+--- Start scene M again: a fresh M.new state copied into `state` in place (demo/main.lua
+--- holds that table), keeping the clock main.lua gave it.
+---@param M table the scene module @param state table
+function scene.reset(M, state)
+  local fresh = M.new(state.S, state.w, state.h)
+  fresh.clock = state.clock
+  for k in pairs(state) do state[k] = nil end
+  for k, v in pairs(fresh) do state[k] = v end
+end
+
+--- keyreleased for a scene that keeps the keys held down in state.keys (its keypressed
+--- sets state.keys[key] = true).
+---@param state table @param key string
+function scene.keyreleased(state, key) state.keys[key] = nil end
+
+--- The names of a list of bodies ({ name =, ... }), but for those named `except`.
+---@param bodies table[] @param except string|nil
+---@return string[]
+function scene.names(bodies, except)
+  local names = {}
+  for _, b in ipairs(bodies) do
+    if b.name ~= except then names[#names + 1] = b.name end
+  end
+  return names
+end
+
+--- Screenshot probes of scene M's state: one inside each body painted with one of
+--- `labels` (that has room; at most `maxShapes` of them, in order), and 3 of background.
+---@param M table the scene module @param state table @param labels string[]
+---@param maxShapes integer|nil
+---@return table[]
+function scene.probes(M, state, labels, maxShapes)
+  return probe.collect(M, state, labels, 3, layout, maxShapes)
+end
+
+return scene

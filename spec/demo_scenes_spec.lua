@@ -1,0 +1,377 @@
+-- The LÖVE demo's scenes driven in plain Lua through their input handlers, as demo/main.lua
+-- drives them from LÖVE's callbacks: dragging and turning shapes, aiming rays, drawing
+-- concave outlines (valid and not), walking over tile seams and chain joints, and the
+-- stress scene's counts.
+local S = require('strike')
+local scenes = require('demo.scenes.list')
+
+local W, H = 800, 600
+
+local function sceneNamed(name)
+  for _, scene in ipairs(scenes) do
+    if scene.name == name then return scene end
+  end
+  error('no scene ' .. name)
+end
+
+-- A painter that records the names of the calls a scene's paint makes.
+local function recorder()
+  local calls = {}
+  local painter = setmetatable({}, { __index = function(_, name)
+    return function() calls[#calls + 1] = name end
+  end })
+  return painter, calls
+end
+
+local function countOf(list, value)
+  local n = 0
+  for _, v in ipairs(list) do if v == value then n = n + 1 end end
+  return n
+end
+
+local function bodyNamed(state, name)
+  for _, b in ipairs(state.bodies) do
+    if b.name == name then return b end
+  end
+end
+
+describe('demo scene: shape pairs', function()
+  local scene = sceneNamed('Shape pairs')
+
+  it('drags a body with the left button and moves it by exactly the mouse motion', function()
+    local state = scene.new(S, W, H)
+    local pentagon = bodyNamed(state, 'pentagon').body
+    local x0, y0 = pentagon:getCentroid()
+    scene.mousepressed(state, x0, y0, 1)
+    scene.mousemoved(state, x0 - 30, y0 + 20, -30, 20)
+    scene.mousemoved(state, x0 - 50, y0 + 10, -20, -10)
+    scene.mousereleased(state, x0 - 50, y0 + 10, 1)
+    scene.mousemoved(state, x0 + 100, y0 + 100, 150, 90) -- released: nothing moves
+    local x1, y1 = pentagon:getCentroid()
+    assert.near(x0 - 50, x1, 1e-9)
+    assert.near(y0 + 10, y1, 1e-9)
+  end)
+
+  it('counts and shows the collisions, and changes the colour of the bodies that collide', function()
+    local state = scene.new(S, W, H)
+    local P, calls = recorder()
+    scene.paint(state, P)
+    local hits = #state.hits
+    assert.is_true(hits >= 2)
+    assert.equals(hits, countOf(calls, 'mtv'))
+    assert.equals(hits, countOf(calls, 'contacts'))
+    assert.equals(0, countOf(calls, 'proj'))
+    local circle = bodyNamed(state, 'circle')
+    assert.is_true(state.colliding[circle])
+    -- drag the circle into the open: one collision fewer, and it is no longer hot
+    local x, y = circle.body:getCentroid()
+    scene.mousepressed(state, x, y, 1)
+    scene.mousemoved(state, x + 260, y - 150)
+    scene.mousereleased(state, x + 260, y - 150, 1)
+    assert.equals(hits - 1, #state.hits)
+    assert.is_nil(state.colliding[circle])
+    assert.matches('^' .. (hits - 1) .. ' collisions', scene.status(state)[1])
+  end)
+
+  it('turns a body with the right button, the wheel and Q / E held', function()
+    local state = scene.new(S, W, H)
+    local rect = bodyNamed(state, 'rectangle').body
+    local x, y = rect:getCentroid()
+    local a0 = rect:getAngle()
+    scene.mousepressed(state, x, y, 2)
+    scene.mousemoved(state, x + 50, y)
+    scene.mousereleased(state, x + 50, y, 2)
+    assert.near(a0 + 0.5, rect:getAngle(), 1e-9)
+    local cx, cy = rect:getCentroid()
+    assert.near(x, cx, 1e-9) -- turned about its centroid, not moved
+    assert.near(y, cy, 1e-9)
+    scene.mousemoved(state, x, y)
+    scene.wheelmoved(state, 0, 2)
+    assert.near(a0 + 0.8, rect:getAngle(), 1e-9)
+    scene.keypressed(state, 'e')
+    for _ = 1, 10 do scene.update(state, 0.02) end
+    scene.keyreleased(state, 'e')
+    scene.update(state, 0.02)
+    assert.near(a0 + 0.8 + 0.5, rect:getAngle(), 1e-9)
+  end)
+
+  it('toggles projections and normals, and resets', function()
+    local state = scene.new(S, W, H)
+    scene.keypressed(state, 'p')
+    scene.keypressed(state, 'n')
+    local P, calls = recorder()
+    scene.paint(state, P)
+    assert.equals(#state.hits, countOf(calls, 'proj'))
+    assert.equals(0, countOf(calls, 'norms'))
+    bodyNamed(state, 'hexagon').body:translate(100, 0)
+    scene.keypressed(state, 'r')
+    assert.same(scene.probes(scene.new(S, W, H)), scene.probes(state))
+  end)
+end)
+
+describe('demo scene: rays', function()
+  local scene = sceneNamed('Rays')
+
+  it('casts a fan of rays from the mouse, more or fewer with + and -', function()
+    local state = scene.new(S, W, H)
+    scene.mousemoved(state, 420, 330)
+    local P, calls = recorder()
+    scene.paint(state, P)
+    assert.equals(state.rays, countOf(calls, 'ray'))
+    local rays = state.rays
+    scene.keypressed(state, '+')
+    assert.equals(rays + 8, state.rays)
+    scene.keypressed(state, '-')
+    scene.keypressed(state, '-')
+    assert.equals(rays - 8, state.rays)
+    assert.matches('^' .. state.rays .. ' rays from %(420, 330%): %d+ hit', scene.status(state)[1])
+  end)
+
+  it('aims one ray at a clicked target and lists its boundary crossings', function()
+    local state = scene.new(S, W, H)
+    local circle = state.bodies[1].body
+    local cx, cy = circle:getCentroid()
+    scene.mousemoved(state, cx, cy + 135)
+    scene.mousepressed(state, cx, cy, 1) -- up through the circle's centre: 2 crossings, nothing else
+    local P, calls = recorder()
+    scene.paint(state, P)
+    assert.equals(1, countOf(calls, 'ray'))
+    assert.equals(2 + 1, countOf(calls, 'disc')) -- the crossings and the origin
+    local status = scene.status(state)
+    assert.matches('2 boundary crossings; first hit at distance 85.0', status[2])
+    scene.mousepressed(state, cx, cy, 2) -- back to the fan
+    assert.is_nil(state.target)
+    -- the target on the origin itself: no ray, no error
+    scene.mousepressed(state, cx, cy + 135, 1)
+    scene.paint(state, recorder())
+    assert.is_string(scene.status(state)[1])
+  end)
+end)
+
+describe('demo scene: concave', function()
+  local scene = sceneNamed('Concave')
+
+  local function outline(state, points, close)
+    for i = 1, #points, 2 do scene.mousepressed(state, points[i], points[i + 1], 1) end
+    if close == 'right' then scene.mousepressed(state, 0, 0, 2) else scene.keypressed(state, 'return') end
+  end
+
+  it('starts with the example outline split into convex pieces', function()
+    local state = scene.new(S, W, H)
+    assert.is_nil(state.error)
+    assert.is_true(state.poly:getShapeCount() >= 3)
+    assert.matches('convex pieces', scene.status(state)[1])
+  end)
+
+  it('builds an outline clicked point by point and closed with Enter or the right button', function()
+    local state = scene.new(S, W, H)
+    outline(state, { 200, 200, 400, 200, 400, 260, 260, 260, 260, 400, 200, 400 }) -- an L
+    assert.is_nil(state.error)
+    assert.equals(2, state.poly:getShapeCount())
+    assert.near(200 * 60 + 60 * 140, state.poly:getArea(), 1e-6)
+    outline(state, { 500, 300, 600, 300, 550, 380 }, 'right')
+    assert.equals(1, state.poly:getShapeCount())
+    assert.same({}, state.draft)
+  end)
+
+  it('shows the library\'s message for an invalid outline instead of failing', function()
+    local state = scene.new(S, W, H)
+    outline(state, { 200, 200, 500, 400, 500, 200, 200, 400 }, 'right') -- a bow tie
+    assert.is_nil(state.poly)
+    assert.matches('^strike%.Concave: outline intersects itself', state.error)
+    local line = scene.status(state)[1]
+    assert.is_true(line.error)
+    assert.equals(state.error, line.text)
+    scene.paint(state, recorder()) -- the refused outline is still drawn
+    -- too few points: the library says so too
+    outline(state, { 100, 100, 200, 200 })
+    assert.matches('^strike%.Concave: .*3', state.error)
+    -- a spike (the outline folds back on itself)
+    outline(state, { 100, 100, 300, 100, 200, 100, 200, 300 })
+    assert.is_string(state.error)
+  end)
+
+  it('clears with C or Backspace, and brings the example back with X', function()
+    local state = scene.new(S, W, H)
+    scene.mousepressed(state, 100, 100, 1)
+    scene.keypressed(state, 'c')
+    assert.is_nil(state.poly)
+    assert.same({}, state.draft)
+    scene.keypressed(state, 'x')
+    assert.same(scene.probes(scene.new(S, W, H)), scene.probes(state))
+    scene.keypressed(state, 'backspace')
+    assert.is_nil(state.poly)
+    scene.keypressed(state, 'return') -- nothing to close
+    assert.is_nil(state.error)
+  end)
+end)
+
+describe('demo scene: terrain', function()
+  local scene = sceneNamed('Terrain')
+  local FLOOR = 480
+
+  -- Hold `key` and step until body b passes x = stop (or `steps` run out); the body's x must
+  -- grow every step once it moves, it must stay on the ground, and on the tiles its bottom
+  -- must stay on their top.
+  local function walk(state, b, key, stop, steps, sign)
+    scene.keypressed(state, key)
+    local px = b.body:getCentroid()
+    local moved = false
+    for i = 1, steps do
+      scene.update(state, scene.STEP)
+      local x = b.body:getCentroid()
+      local x0, _, x1, bottom = b.body:getBounds()
+      if moved then
+        assert.is_true((x - px) * sign > 0, ('%s snagged at x = %.3f (step %d)'):format(b.name, x, i))
+      end
+      moved = moved or x ~= px
+      assert.is_true(b.grounded, ('%s left the ground at x = %.3f (step %d)'):format(b.name, x, i))
+      if x1 < 400 then -- over the tiles only
+        assert.is_true(math.abs(bottom - FLOOR) < 0.5, ('%s at x = %.2f: bottom %.3f'):format(b.name, x, bottom))
+      end
+      px = x
+      if (x - stop) * sign >= 0 then break end
+      assert(x0 >= 0 and x1 <= W)
+    end
+    scene.keyreleased(state, key)
+    return px
+  end
+
+  it('the box slides over every tile seam and chain joint to the far end without snagging', function()
+    local state = scene.new(S, W, H)
+    state.ball.body:translateTo(20, 462) -- out of the way, behind the box
+    local x = walk(state, state.box, 'right', 760, 2000, 1)
+    assert.is_true(x >= 760)
+  end)
+
+  it('and back again to the left', function()
+    local state = scene.new(S, W, H)
+    state.ball.body:translateTo(785, 397)
+    state.box.body:translateTo(740, 397)
+    for _ = 1, 30 do scene.update(state, scene.STEP) end
+    local x = walk(state, state.box, 'left', 40, 2000, -1)
+    assert.is_true(x <= 40)
+  end)
+
+  it('the ball crosses the tile seams too, and both come to rest on a slope without creeping', function()
+    local state = scene.new(S, W, H)
+    state.box.body:translateTo(30, 462)
+    walk(state, state.ball, 'd', 520, 2000, 1)
+    for _ = 1, 120 do scene.update(state, scene.STEP) end -- stop
+    local x0, y0 = state.ball.body:getCentroid()
+    for _ = 1, 240 do scene.update(state, scene.STEP) end
+    local x1, y1 = state.ball.body:getCentroid()
+    assert.near(x0, x1, 1e-9)
+    assert.near(y0, y1, 1e-9)
+    assert.is_true(state.ball.grounded)
+    assert.is_true(state.ball.mtv.nx < -0.1) -- on the slope
+  end)
+
+  it('jumps from the ground and lands again; the status shows the contact normal', function()
+    local state = scene.new(S, W, H)
+    local _, y0 = state.box.body:getCentroid()
+    scene.keypressed(state, 'up')
+    scene.update(state, scene.STEP)
+    scene.keyreleased(state, 'up')
+    local top = y0
+    for _ = 1, 240 do
+      scene.update(state, scene.STEP)
+      local _, y = state.box.body:getCentroid()
+      top = math.min(top, y)
+    end
+    assert.is_true(y0 - top > 60)
+    local _, y1 = state.box.body:getCentroid()
+    assert.near(y0, y1, 0.5)
+    assert.is_true(state.box.grounded)
+    assert.matches('^box at .*on the ground: normal %(0%.00, %-1%.00%)', scene.status(state)[1])
+  end)
+end)
+
+describe('demo scene: stress', function()
+  local scene = sceneNamed('Stress')
+
+  it('counts grid pairs, narrow-phase tests and collisions, and times them', function()
+    local state = scene.new(S, W, H)
+    assert.equals(scene.COUNT, #state.bodies)
+    local collisions = 0
+    for _ = 1, 60 do
+      scene.update(state, 1 / 60)
+      local s = state.stats
+      assert.is_true(s.candidates > 0)
+      assert.is_true(s.narrow <= s.candidates and s.collisions <= s.narrow)
+      assert.is_true(s.ms >= 0)
+      collisions = collisions + s.collisions
+    end
+    assert.is_true(collisions > 0)
+    local lines = scene.status(state)
+    assert.matches(('^%d bodies: %d grid pairs, %d narrow%%-phase tests'):format(scene.COUNT, state.stats.candidates,
+      state.stats.narrow), lines[1])
+    assert.matches('ms/frame', lines[2])
+  end)
+
+  it('its grid reports every pair of overlapping boxes exactly once', function()
+    local Grid = require('demo.util.grid')
+    local rng = require('spec.helpers.prng').new(7)
+    for _, size in ipairs({ 32, 50, 7 }) do
+      local grid = Grid.new(size, 300, 200)
+      local boxes = {}
+      for i = 1, 150 do
+        local x, y = rng:range(-20, 310), rng:range(-20, 210) -- some past the borders
+        boxes[i] = { x, y, x + rng:range(0, 40), y + rng:range(0, 40) }
+        grid:insert(i, boxes[i][1], boxes[i][2], boxes[i][3], boxes[i][4])
+      end
+      local seen = {}
+      grid:eachPair(function(i, j)
+        local key = math.min(i, j) .. ',' .. math.max(i, j)
+        assert.is_nil(seen[key], 'reported twice: ' .. key)
+        seen[key] = true
+      end)
+      for i = 1, #boxes do
+        for j = i + 1, #boxes do
+          local a, b = boxes[i], boxes[j]
+          if a[1] < b[3] and b[1] < a[3] and a[2] < b[4] and b[2] < a[4] then
+            assert.is_true(seen[i .. ',' .. j], ('size %d: missed the pair %d, %d'):format(size, i, j))
+          end
+        end
+      end
+      grid:clear()
+      assert.equals(0, grid:eachPair(function() error('cleared') end))
+    end
+  end)
+
+  it('keeps every body inside the field, and + / - change the count', function()
+    local state = scene.new(S, W, H)
+    for _ = 1, 120 do scene.update(state, 1 / 30) end
+    for _, b in ipairs(state.bodies) do
+      local x0, y0, x1, y1 = b.body:getBounds()
+      assert.is_true(x0 >= -1e-9 and y0 >= -1e-9 and x1 <= state.fieldW + 1e-9 and y1 <= state.fieldH + 1e-9)
+    end
+    scene.keypressed(state, '+')
+    assert.equals(scene.COUNT + 50, #state.bodies)
+    scene.update(state, 1 / 60)
+    assert.equals(scene.COUNT + 50, state.stats.bodies)
+    scene.keypressed(state, '-')
+    scene.keypressed(state, 'kp-')
+    assert.equals(scene.COUNT - 50, #state.bodies)
+    for _ = 1, 100 do scene.keypressed(state, '-') end
+    assert.equals(50, #state.bodies)
+  end)
+end)
+
+describe('demo scenes: R', function()
+  for _, name in ipairs({ 'Shape pairs', 'Terrain', 'Stress' }) do
+    it(('resets %s in place to its initial state, keeping the clock main.lua set'):format(name), function()
+      local scene = sceneNamed(name)
+      local state = scene.new(S, W, H)
+      local clock = function() return 0 end
+      state.clock = clock
+      scene.keypressed(state, 'right')
+      for _ = 1, 30 do scene.update(state, 1 / 30) end
+      scene.keypressed(state, 'r')
+      local fresh = scene.new(S, W, H)
+      assert.equals(clock, state.clock)
+      assert.same(scene.probes(fresh), scene.probes(state))
+      assert.same(scene.status(fresh), scene.status(state))
+    end)
+  end
+end)

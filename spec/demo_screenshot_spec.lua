@@ -1,0 +1,120 @@
+-- The LÖVE demo (demo/): every scene builds, updates and gives its screenshot probes in
+-- plain Lua; with STRIKE_SCREENSHOTS set, the screenshots that tools/screenshots.sh made
+-- there (scene1.png ...) must show each probe's colour.
+--
+--   bash tools/screenshots.sh /tmp/shots && STRIKE_SCREENSHOTS=/tmp/shots make spec
+--
+-- Colours are compared within a tolerance of 2 per channel (0-255): the scenes fill their
+-- shapes with opaque colours of whole 0-255 values, which LÖVE's software OpenGL renders
+-- exactly; the tolerance allows for a driver that rounds differently.
+local S = require('strike')
+local scenes = require('demo.scenes.list')
+local layout = require('demo.util.layout')
+
+local W, H = layout.WIDTH, layout.HEIGHT
+local TOLERANCE = 2
+local CLEAR = 4 -- a probe's distance from the overlays, at least
+
+local function isByte(v) return type(v) == 'number' and v >= 0 and v <= 255 and v == math.floor(v) end
+
+local function count(probes)
+  local shapes, background = 0, 0
+  for _, p in ipairs(probes) do
+    if p.what:match('^background') then background = background + 1 else shapes = shapes + 1 end
+  end
+  return shapes, background
+end
+
+describe('the demo scenes, in plain Lua', function()
+  it('are listed in order, each with a name, help lines and the functions main.lua calls', function()
+    assert.is_true(#scenes >= 5)
+    for n, scene in ipairs(scenes) do
+      local where = ('scene %d'):format(n)
+      assert.equals('string', type(scene.name), where)
+      assert.equals('table', type(scene.help), where)
+      for _, f in ipairs({ 'new', 'update', 'paint', 'draw', 'probes', 'status' }) do
+        assert.equals('function', type(scene[f]), where .. ': ' .. f)
+      end
+      -- the help panel is 420 px wide; LÖVE's default font is about 7 px a character
+      for _, line in ipairs(layout.helpLines(scenes, n)) do
+        assert.is_true(#line <= 56, where .. ': help line too long: ' .. line)
+      end
+    end
+  end)
+
+  for n, scene in ipairs(scenes) do
+    describe(('scene %d (%s)'):format(n, scene.name), function()
+      it('builds its state, updates and reports its status without LÖVE', function()
+        assert.is_nil(rawget(_G, 'love'))
+        local state = scene.new(S, W, H)
+        for _ = 1, 30 do scene.update(state, 1 / 60) end
+        local lines = scene.status(state)
+        assert.is_true(#lines <= layout.STATUS_LINES)
+        for _, line in ipairs(lines) do
+          local text = type(line) == 'table' and line.text or line
+          assert.equals('string', type(text))
+        end
+      end)
+
+      it('gives at least 3 shape probes and 2 background probes, inside the window and clear of the overlays',
+        function()
+          local state = scene.new(S, W, H)
+          local probes = scene.probes(state)
+          local shapes, background = count(probes)
+          assert.is_true(shapes >= 3, ('scene %d: %d shape probes'):format(n, shapes))
+          assert.is_true(background >= 2, ('scene %d: %d background probes'):format(n, background))
+          local reserved = layout.reserved(scene, W, H)
+          for _, p in ipairs(probes) do
+            local where = ('scene %d, probe %s'):format(n, tostring(p.what))
+            assert.equals('string', type(p.what), where)
+            assert.is_true(isByte(p.r) and isByte(p.g) and isByte(p.b), where .. ': colour')
+            assert.is_true(p.x == math.floor(p.x) and p.y == math.floor(p.y), where .. ': whole pixels')
+            assert.is_true(p.x >= 0 and p.x < W and p.y >= 0 and p.y < H, where .. ': outside the window')
+            for _, r in ipairs(reserved) do
+              local inside = p.x > r[1] - CLEAR and p.x < r[1] + r[3] + CLEAR and p.y > r[2] - CLEAR
+                and p.y < r[2] + r[4] + CLEAR
+              assert.is_false(inside, where .. ': under an overlay')
+            end
+            if p.what:match('^background') then
+              assert.same(layout.BACKGROUND, { p.r, p.g, p.b }, where)
+            end
+          end
+        end)
+
+      it('is deterministic: two builds give the same probes', function()
+        assert.same(scene.probes(scene.new(S, W, H)), scene.probes(scene.new(S, W, H)))
+      end)
+    end)
+  end
+end)
+
+describe('the demo screenshots', function()
+  local dir = os.getenv('STRIKE_SCREENSHOTS')
+  if not dir or dir == '' then
+    pending('not checked: STRIKE_SCREENSHOTS is not set. Make the screenshots with '
+      .. '`bash tools/screenshots.sh /tmp/shots` (LÖVE 11.4 and xvfb-run), then run the specs '
+      .. 'with STRIKE_SCREENSHOTS=/tmp/shots')
+    return
+  end
+  local png = require('spec.helpers.png')
+
+  for n, scene in ipairs(scenes) do
+    it(('scene %d (%s) shows every probe\'s colour (within %d per channel)'):format(n, scene.name, TOLERANCE),
+      function()
+        local path = ('%s/scene%d.png'):format(dir, n)
+        local ok, image = pcall(png.read, path)
+        assert(ok, ('%s (make it with: bash tools/screenshots.sh %s)'):format(tostring(image), dir))
+        assert.equals(W, image.width, path .. ': width')
+        assert.equals(H, image.height, path .. ': height')
+        local wrong = {}
+        for _, p in ipairs(scene.probes(scene.new(S, W, H))) do
+          local r, g, b = image:pixel(p.x, p.y)
+          if math.abs(r - p.r) > TOLERANCE or math.abs(g - p.g) > TOLERANCE or math.abs(b - p.b) > TOLERANCE then
+            wrong[#wrong + 1] = ('scene %d (%s), probe "%s" at (%d, %d): expected %d, %d, %d, got %d, %d, %d'):format(
+              n, scene.name, p.what, p.x, p.y, p.r, p.g, p.b, r, g, b)
+          end
+        end
+        assert(#wrong == 0, table.concat(wrong, '\n'))
+      end)
+  end
+end)
