@@ -1,9 +1,10 @@
-# strike: make test runs luacheck and the busted suite under every Lua VM.
+# strike: make test runs luacheck, the copy check, the LÖVE screenshot checks and the busted
+# suite under every Lua VM.
 VMS ?= lua5.1 lua5.2 lua5.3 lua5.4 luajit
 
-.PHONY: test deps lint spec copy-check bench demo
+.PHONY: test deps lint spec copy-check love-check bench demo
 
-test: deps lint copy-check spec
+test: deps lint copy-check love-check spec
 
 # Installs what the checks need (Debian packages) when it is missing and this machine can
 # (root with apt-get); otherwise says exactly what to install.
@@ -14,8 +15,16 @@ lint:
 	@echo "== luacheck"
 	@luacheck --formatter plain --codes .
 
+# The screenshot spec reads SHOTS when love-check completed a set there (SHOTS/ok).
 spec:
-	@bash tools/spec.sh $(VMS)
+	@if [ -f $(SHOTS)/ok ]; then export STRIKE_SCREENSHOTS=$(SHOTS); fi; bash tools/spec.sh $(VMS)
+
+# LÖVE: screenshots of every demo scene, under xvfb-run (installs love and xvfb when it
+# can; says so and skips otherwise).
+SHOTS ?= build/screenshots
+
+love-check:
+	@bash tools/love-check.sh $(SHOTS)
 
 # The folder works wherever a game copies it.
 copy-check:
@@ -28,11 +37,17 @@ BENCH_VMS ?= luajit lua5.4
 bench:
 	@BENCH_VMS="$(BENCH_VMS)" bash bench/bench.sh
 
-# The headless example (plain Lua, any VM): a scene's collisions, MTVs, contact points and a
-# ray cast as a table, and a picture of it as SVG (DEMO_SVG=path, default strike-demo.svg).
-# The interactive LÖVE demo is not written yet.
+# `make demo`: the interactive LÖVE demo (love demo) where LÖVE and a display are present;
+# otherwise, or with HEADLESS=1, the headless example (plain Lua, any VM): a scene's
+# collisions, MTVs, contact points and a ray cast as a table, and a picture of it as SVG
+# (DEMO_SVG=path, default strike-demo.svg).
 DEMO_LUA ?= $(firstword $(foreach vm,luajit lua5.4 lua5.3 lua5.2 lua5.1 lua,$(shell command -v $(vm) 2>/dev/null)))
 DEMO_SVG ?= strike-demo.svg
+HEADLESS ?=
 
 demo:
-	@$(DEMO_LUA) examples/demo.lua $(DEMO_SVG)
+	@if [ -z "$(HEADLESS)" ] && command -v love >/dev/null 2>&1 && [ -n "$${DISPLAY:-}$${WAYLAND_DISPLAY:-}" ]; then \
+	  echo "== love demo (HEADLESS=1 make demo for the headless example)"; love demo; \
+	else \
+	  $(DEMO_LUA) examples/demo.lua $(DEMO_SVG); \
+	fi
