@@ -117,7 +117,8 @@ function S.triking(collider1, collider2, out)
     if r1 == r2 then return false end
     if s1._dirty then s1:_refresh() end
     if s2._dirty then s2:_refresh() end
-    if min(s1._maxx, s2._maxx) < max(s1._minx, s2._minx) or min(s1._maxy, s2._maxy) < max(s1._miny, s2._miny) then
+    local w1, w2 = s1._w, s2._w -- (bounds first: minx, miny, maxx, maxy)
+    if min(w1[3], w2[3]) < max(w1[1], w2[1]) or min(w1[4], w2[4]) < max(w1[2], w2[2]) then
       return false -- the bounds do not even meet
     end
     local m = dispatch[s1.kind][s2.kind](s1, s2, out or tmpA)
@@ -143,7 +144,8 @@ function S.triking(collider1, collider2, out)
   for i = 1, n1 do
     local a = l1[i]
     if a._dirty then a:_refresh() end
-    local ax0, ay0, ax1, ay1 = a._minx, a._miny, a._maxx, a._maxy
+    local wa = a._w
+    local ax0, ay0, ax1, ay1 = wa[1], wa[2], wa[3], wa[4]
     local row = dispatch[a.kind]
     for j = 1, n2 do
       local b = l2[j]
@@ -151,7 +153,8 @@ function S.triking(collider1, collider2, out)
       -- Bounds meet (closed intervals: an axis-aligned edge or a point has a flat box;
       -- the narrow phase decides touching), as two tests instead of four: fewer trace
       -- exits under LuaJIT.
-      if min(ax1, b._maxx) >= max(ax0, b._minx) and min(ay1, b._maxy) >= max(ay0, b._miny) then
+      local wb = b._w
+      if min(ax1, wb[3]) >= max(ax0, wb[1]) and min(ay1, wb[4]) >= max(ay0, wb[2]) then
         row[b.kind](a, b, tmp)
         local d = tmp.depth
         if d > bestDepth then -- (false for NaN and for separating results)

@@ -26,9 +26,9 @@ function Shape:_setPose(x, y)
   self.kind = self.kind -- an own copy of the class's kind: the dispatch reads it every test
   self._x, self._y = x, y
   self._angle, self._cos, self._sin, self._scale = 0, 1, 0, 1
-  -- (the bounds get their slots now, so the object's fields are laid out once, at
-  -- construction, instead of growing again at the first refresh)
-  self._minx, self._miny, self._maxx, self._maxy = x, y, x, y
+  -- World-space data, refreshed when dirty, starts with the bounds: minx, miny, maxx, maxy
+  -- in _w[1] to _w[4] (polygons keep their vertex records after them, see VertexShape).
+  if not self._w then self._w = { x, y, x, y } end
   self._dirty = true
 end
 
@@ -154,14 +154,16 @@ function Shape:getRadius() return self._radius * self._scale end
 ---@return number x, number y, number w, number h
 function Shape:getBbox()
   if self._dirty then self:_refresh() end
-  return self._minx, self._miny, self._maxx - self._minx, self._maxy - self._miny
+  local w = self._w
+  return w[1], w[2], w[3] - w[1], w[4] - w[2]
 end
 
 --- Axis-aligned bounds as minimum x, minimum y, maximum x, maximum y.
 ---@return number minx, number miny, number maxx, number maxy
 function Shape:getBounds()
   if self._dirty then self:_refresh() end
-  return self._minx, self._miny, self._maxx, self._maxy
+  local w = self._w
+  return w[1], w[2], w[3], w[4]
 end
 
 --- The outermost collider that holds this shape, or the shape itself when it has none.

@@ -1,13 +1,16 @@
 --- The base of every shape made of vertices: ConvexPolygon (and its subclasses) and Edge.
---- Geometry lives in flat number arrays with a count:
----   _lx, _ly    local vertices (relative to the centroid, unrotated, unscaled), positive winding
----   _lnx, _lny  local unit outward normals, normal i belongs to edge i (vertex i to vertex i+1)
----   _w          world-space data, refreshed when dirty, in one array of 5n numbers: vertex
----               i's record starts at k = 5i - 4 and holds x, y (w[k], w[k+1]), the unit
----               normal of edge i (w[k+2], w[k+3]) and the offset of edge i's line along that
----               normal, dot(normal i, vertex i) (w[k+4]). The narrow phase reads one
----               contiguous array per shape, so that a test touches few cache lines.
----   _minx.._maxy world-space bounds, refreshed with _w.
+--- Geometry lives in flat number arrays with a count, _n:
+---   _l          local geometry, 4n numbers: vertex i's record starts at k = 4i - 3 and holds
+---               the vertex relative to the centroid, unrotated and unscaled (l[k], l[k+1];
+---               positive winding), and the unit outward normal of edge i, from vertex i to
+---               vertex i + 1 (l[k+2], l[k+3])
+---   _w          world-space data, refreshed when dirty, in one array of 5n + 4 numbers: the
+---               bounds minx, miny, maxx, maxy (w[1] to w[4], as for every shape, see Shape),
+---               then one record per vertex: vertex i's starts at k = 5i and holds x, y
+---               (w[k], w[k+1]), the unit normal of edge i (w[k+2], w[k+3]) and the offset
+---               of edge i's line along that normal, dot(normal i, vertex i) (w[k+4]). The
+---               narrow phase reads one contiguous array per shape, so that a test touches
+---               few cache lines.
 ---   _half       n / 2 when the polygon is centrally symmetric (normal i + n/2 is exactly
 ---               -normal i: rectangles, even regular polygons, edges), else 0; the narrow
 ---               phase then gets two faces' separations from one projection of the other shape.
@@ -29,37 +32,37 @@ local ANTIPARALLEL = 1e-10
 
 -- n / 2 when every normal i + n/2 is (nearly) -normal i, snapping those to exactly -normal
 -- i; else 0 and the normals stay as they are.
-local function symmetricHalf(lnx, lny, n)
+local function symmetricHalf(l, n)
   if n % 2 ~= 0 then return 0 end
   local h = floor(n / 2)
-  for i = 1, h do
-    if abs(lnx[i] + lnx[i + h]) > ANTIPARALLEL or abs(lny[i] + lny[i + h]) > ANTIPARALLEL then return 0 end
+  for k = 3, 4 * h, 4 do -- (k: normal i's x; k + 4h: normal i + h's)
+    if abs(l[k] + l[k + 4 * h]) > ANTIPARALLEL or abs(l[k + 1] + l[k + 1 + 4 * h]) > ANTIPARALLEL then return 0 end
   end
-  for i = 1, h do lnx[i + h], lny[i + h] = -lnx[i], -lny[i] end
+  for k = 3, 4 * h, 4 do l[k + 4 * h], l[k + 1 + 4 * h] = -l[k], -l[k + 1] end
   return h
 end
 
 --- Store world-space vertices xs, ys (count n, positive winding, validated) as local
 --- geometry about the centroid (cx, cy), with the given unscaled area.
 function VertexShape:_setVertices(xs, ys, n, cx, cy, area)
-  local lx, ly, lnx, lny = {}, {}, {}, {}
+  local l = {}
   local r2 = 0
   for i = 1, n do
     local x, y = xs[i] - cx, ys[i] - cy
-    lx[i], ly[i] = x, y
+    l[4 * i - 3], l[4 * i - 2] = x, y
     local d2 = x * x + y * y
     if d2 > r2 then r2 = d2 end
   end
   for i = 1, n do
-    local j = i < n and i + 1 or 1
-    local ex, ey = lx[j] - lx[i], ly[j] - ly[i]
-    local l = sqrt(ex * ex + ey * ey)
-    lnx[i], lny[i] = ey / l, -ex / l
+    local k, j = 4 * i - 3, i < n and 4 * i + 1 or 1
+    local ex, ey = l[j] - l[k], l[j + 1] - l[k + 1]
+    local len = sqrt(ex * ex + ey * ey)
+    l[k + 2], l[k + 3] = ey / len, -ex / len
   end
-  self._n, self._lx, self._ly, self._lnx, self._lny = n, lx, ly, lnx, lny
-  self._half = symmetricHalf(lnx, lny, n)
+  self._n, self._l = n, l
+  self._half = symmetricHalf(l, n)
   local w = {}
-  for k = 1, 5 * n do w[k] = 0 end
+  for k = 1, 5 * n + 4 do w[k] = 0 end
   self._w = w
   self._area, self._radius = area, sqrt(r2)
   self:_setPose(cx, cy)
@@ -69,23 +72,23 @@ function VertexShape:_refresh()
   local n = self._n
   local c, s, k = self._cos, self._sin, self._scale
   local x0, y0 = self._x, self._y
-  local lx, ly, lnx, lny = self._lx, self._ly, self._lnx, self._lny
-  local w = self._w
+  local l, w = self._l, self._w
   local minx, miny, maxx, maxy = huge, huge, -huge, -huge
   local sc, ss = c * k, s * k
   for i = 1, n do
-    local x, y = lx[i], ly[i]
+    local q = 4 * i - 3
+    local x, y = l[q], l[q + 1]
     local px, py = x0 + sc * x - ss * y, y0 + ss * x + sc * y
     if px < minx then minx = px end
     if px > maxx then maxx = px end
     if py < miny then miny = py end
     if py > maxy then maxy = py end
-    x, y = lnx[i], lny[i]
+    x, y = l[q + 2], l[q + 3]
     x, y = c * x - s * y, s * x + c * y
-    local r = 5 * i - 4
+    local r = 5 * i
     w[r], w[r + 1], w[r + 2], w[r + 3], w[r + 4] = px, py, x, y, x * px + y * py
   end
-  self._minx, self._miny, self._maxx, self._maxy = minx, miny, maxx, maxy
+  w[1], w[2], w[3], w[4] = minx, miny, maxx, maxy
   self._dirty = false
 end
 
@@ -104,7 +107,7 @@ function VertexShape:getVertexCount() return self._n end
 function VertexShape:getVertex(i)
   if not inRange(i, self._n) then return nil end
   if self._dirty then self:_refresh() end
-  local w, k = self._w, 5 * i - 4
+  local w, k = self._w, 5 * i
   return w[k], w[k + 1]
 end
 
@@ -116,7 +119,7 @@ function VertexShape:getEdge(i)
   local n = self._n
   if not inRange(i, n) then return nil end
   if self._dirty then self:_refresh() end
-  local w, k, l = self._w, 5 * i - 4, i < n and 5 * i + 1 or 1
+  local w, k, l = self._w, 5 * i, i < n and 5 * i + 5 or 5
   return w[k], w[k + 1], w[l], w[l + 1]
 end
 
@@ -126,7 +129,7 @@ end
 function VertexShape:getNormal(i)
   if not inRange(i, self._n) then return nil end
   if self._dirty then self:_refresh() end
-  local w, k = self._w, 5 * i - 4
+  local w, k = self._w, 5 * i
   return w[k + 2], w[k + 3]
 end
 
@@ -139,7 +142,7 @@ function VertexShape:getVertices(out)
   out = out or {}
   local n, w = self._n, self._w
   for i = 1, n do
-    out[2 * i - 1], out[2 * i] = w[5 * i - 4], w[5 * i - 3]
+    out[2 * i - 1], out[2 * i] = w[5 * i], w[5 * i + 1]
   end
   for i = #out, 2 * n + 1, -1 do out[i] = nil end
   return out, n
@@ -154,7 +157,7 @@ function VertexShape:project(nx, ny)
   if self._dirty then self:_refresh() end
   local w = self._w
   local lo, hi = huge, -huge
-  for k = 1, 5 * self._n, 5 do
+  for k = 5, 5 * self._n, 5 do
     local d = w[k] * nx + w[k + 1] * ny
     if d < lo then lo = d end
     if d > hi then hi = d end
@@ -170,7 +173,7 @@ function VertexShape:getSupport(nx, ny)
   local w = self._w
   local best, bi = -huge, 1
   for i = 1, self._n do
-    local k = 5 * i - 4
+    local k = 5 * i
     local d = w[k] * nx + w[k + 1] * ny
     if d > best then best, bi = d, i end
   end
@@ -186,7 +189,7 @@ function VertexShape:containsPoint(x, y)
   if self._dirty then self:_refresh() end
   if self._n < 3 then return false end
   local w = self._w
-  for k = 1, 5 * self._n, 5 do
+  for k = 5, 5 * self._n, 5 do
     if (x - w[k]) * w[k + 2] + (y - w[k + 1]) * w[k + 3] >= 0 then return false end
   end
   return true
@@ -197,7 +200,7 @@ local function edgeIter(self, i)
   i = i + 1
   local n = self._n
   if i > n then return nil end
-  local w, k, l = self._w, 5 * i - 4, i < n and 5 * i + 1 or 1
+  local w, k, l = self._w, 5 * i, i < n and 5 * i + 5 or 5
   return i, w[k], w[k + 1], w[l], w[l + 1]
 end
 
@@ -214,7 +217,7 @@ local function vecIter(self, i)
   i = i + 1
   local n = self._n
   if i > n then return nil end
-  local w, k, l = self._w, 5 * i - 4, i < n and 5 * i + 1 or 1
+  local w, k, l = self._w, 5 * i, i < n and 5 * i + 5 or 5
   return i, w[l] - w[k], w[l + 1] - w[k + 1]
 end
 
@@ -232,7 +235,7 @@ function VertexShape:_farthest(px, py)
   if self._dirty then self:_refresh() end
   local w = self._w
   local best = 0
-  for k = 1, 5 * self._n, 5 do
+  for k = 5, 5 * self._n, 5 do
     local dx, dy = w[k] - px, w[k + 1] - py
     local d = dx * dx + dy * dy
     if d > best then best = d end

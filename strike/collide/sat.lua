@@ -56,11 +56,11 @@ local function maxSeparationWalk(A, B)
   local pj
   local first = na == 2 and 2 or 1 -- faces scanned in full
   for i = 1, first do
-    local k = 5 * i - 4
+    local k = 5 * i
     local nx, ny = a[k + 2], a[k + 3]
-    j, pj = 1, nx * b[1] + ny * b[2]
+    j, pj = 1, nx * b[5] + ny * b[6]
     for jj = 2, nb do
-      local r = 5 * jj - 4
+      local r = 5 * jj
       local p = nx * b[r] + ny * b[r + 1]
       if p < pj then j, pj = jj, p end
     end
@@ -71,13 +71,13 @@ local function maxSeparationWalk(A, B)
     end
   end
   for i = first + 1, na do
-    local k = 5 * i - 4
+    local k = 5 * i
     local nx, ny = a[k + 2], a[k + 3]
-    local r = 5 * j - 4
+    local r = 5 * j
     pj = nx * b[r] + ny * b[r + 1]
     while true do
       local jj = j < nb and j + 1 or 1
-      r = 5 * jj - 4
+      r = 5 * jj
       local p = nx * b[r] + ny * b[r + 1]
       if p < pj then j, pj = jj, p else break end
     end
@@ -99,7 +99,7 @@ end
 local min, max = math.min, math.max
 local function maxSeparationScan(A, B)
   local a, b, na, nb = A._w, B._w, A._n, B._n
-  local last = 5 * nb - 4 -- B's last vertex record
+  local last = 5 * nb -- B's last vertex record
   local best, bi = -huge, 1
   local h = A._half
   if h > 0 then
@@ -109,10 +109,10 @@ local function maxSeparationScan(A, B)
     -- something separates, the lowest separating face (face i < h + 1 <= any face i + h).
     local sepI, sepS = 0, 0 -- the first separating face of the second half, if any
     for i = 1, h do
-      local k = 5 * i - 4
+      local k = 5 * i
       local nx, ny = a[k + 2], a[k + 3]
       local lo, hi = huge, -huge
-      for r = 1, last, 5 do
+      for r = 5, last, 5 do
         local p = nx * b[r] + ny * b[r + 1]
         lo, hi = min(lo, p), max(hi, p)
       end
@@ -120,7 +120,7 @@ local function maxSeparationScan(A, B)
       if s >= 0 then return s, i end
       if s > best or (s == best and i < bi) then best, bi = s, i end
       local f = i + h
-      s = -hi - a[5 * f]
+      s = -hi - a[5 * f + 4]
       if s >= 0 then
         if sepI == 0 then sepI, sepS = f, s end
       elseif s > best or (s == best and f < bi) then
@@ -131,10 +131,10 @@ local function maxSeparationScan(A, B)
     return best, bi
   end
   for i = 1, na do
-    local k = 5 * i - 4
+    local k = 5 * i
     local nx, ny = a[k + 2], a[k + 3]
     local s = huge
-    for r = 1, last, 5 do
+    for r = 5, last, 5 do
       s = min(s, nx * b[r] + ny * b[r + 1])
     end
     s = s - a[k + 4]
@@ -166,13 +166,13 @@ function sat.polygonPolygon(A, B, out)
   if B._dirty then B:_refresh() end
   local sA, iA = maxSeparation(A, B)
   local a = A._w
-  if sA >= 0 then return result(out, A, B, a[5 * iA - 2], a[5 * iA - 1], -sA, iA) end
+  if sA >= 0 then return result(out, A, B, a[5 * iA + 2], a[5 * iA + 3], -sA, iA) end
   local sB, iB = maxSeparation(B, A)
   if sB > sA then
     local b = B._w
-    return result(out, A, B, -b[5 * iB - 2], -b[5 * iB - 1], -sB, -iB)
+    return result(out, A, B, -b[5 * iB + 2], -b[5 * iB + 3], -sB, -iB)
   end
-  return result(out, A, B, a[5 * iA - 2], a[5 * iA - 1], -sA, iA)
+  return result(out, A, B, a[5 * iA + 2], a[5 * iA + 3], -sA, iA)
 end
 
 -- Polygon P against circle C; when `flip`, report it as C against P.
@@ -182,19 +182,19 @@ local function polygonCircle(P, C, out, flip)
   local n, w = P._n, P._w
   local best, bi = -huge, 1
   for i = 1, n do
-    local k = 5 * i - 4
+    local k = 5 * i
     local s = w[k + 2] * (cx - w[k]) + w[k + 3] * (cy - w[k + 1])
     if s > best then
       best, bi = s, i
       if s >= r then break end
     end
   end
-  local k = 5 * bi - 4
+  local k = 5 * bi
   local nx, ny, depth, edge = w[k + 2], w[k + 3], r - best, bi
   if (best > 0 or n == 2) and best < r then
     -- the centre is outside face bi (or, for an edge, anywhere on its line): the closest
     -- feature is the face or one of its ends
-    local l = bi < n and k + 5 or 1
+    local l = bi < n and k + 5 or 5
     local x1, y1, x2, y2 = w[k], w[k + 1], w[l], w[l + 1]
     local vx, vy
     if (cx - x1) * (x2 - x1) + (cy - y1) * (y2 - y1) <= 0 then

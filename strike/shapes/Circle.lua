@@ -30,8 +30,8 @@ end
 function Circle:_refresh()
   local r = self._r * self._scale
   local x, y = self._x, self._y
-  self._wr = r
-  self._minx, self._miny, self._maxx, self._maxy = x - r, y - r, x + r, y + r
+  local w = self._w
+  w[1], w[2], w[3], w[4] = x - r, y - r, x + r, y + r
   self._dirty = false
 end
 
@@ -97,7 +97,7 @@ local function axisToward(self, other)
     if other._dirty then other:_refresh() end
     local best = math.huge
     local w = other._w
-    for k = 1, 5 * other._n, 5 do
+    for k = 5, 5 * other._n, 5 do
       local dx, dy = w[k] - cx, w[k + 1] - cy
       local d = dx * dx + dy * dy
       if d < best then best, tx, ty = d, w[k], w[k + 1] end
