@@ -108,17 +108,14 @@ function S.triking(collider1, collider2, out)
   end
   if s2 then
     if out ~= nil and type(out) ~= 'table' then checkOut('strike.triking', out, 3) end
-    -- (rawget: a collider without a parent has no such field; no metatable walk)
     local r1, r2 = collider1, collider2
-    local p = rawget(r1, 'parent')
-    while p do r1, p = p, rawget(p, 'parent') end
-    p = rawget(r2, 'parent')
-    while p do r2, p = p, rawget(p, 'parent') end
+    while r1.parent do r1 = r1.parent end
+    while r2.parent do r2 = r2.parent end
     if r1 == r2 then return false end
     if s1._dirty then s1:_refresh() end
     if s2._dirty then s2:_refresh() end
     local w1, w2 = s1._w, s2._w -- (bounds first: minx, miny, maxx, maxy)
-    if min(w1[3], w2[3]) < max(w1[1], w2[1]) or min(w1[4], w2[4]) < max(w1[2], w2[2]) then
+    if w1[3] < w2[1] or w2[3] < w1[1] or w1[4] < w2[2] or w2[4] < w1[2] then
       return false -- the bounds do not even meet
     end
     local m = dispatch[s1.kind][s2.kind](s1, s2, out or tmpA)

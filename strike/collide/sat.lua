@@ -18,8 +18,8 @@ local sqrt, huge, abs = math.sqrt, math.huge, math.abs
 
 -- The outermost collider of a shape, or the shape itself.
 local function root(s)
-  local p = rawget(s, 'parent') -- (rawget: no metatable walk when there is none)
-  while p do s, p = p, rawget(p, 'parent') end
+  local p = s.parent
+  while p do s, p = p, p.parent end
   return s
 end
 --- root(shape): the outermost collider holding the shape, or the shape itself.
