@@ -114,8 +114,8 @@ function S.triking(collider1, collider2, out)
     if r1 == r2 then return false end
     if s1._dirty then s1:_refresh() end
     if s2._dirty then s2:_refresh() end
-    local w1, w2 = s1._w, s2._w -- (bounds first: minx, miny, maxx, maxy)
-    if w1[3] < w2[1] or w2[3] < w1[1] or w1[4] < w2[2] or w2[4] < w1[2] then
+    -- (a shape's bounds are its entries 1 to 4: minx, miny, maxx, maxy)
+    if s1[3] < s2[1] or s2[3] < s1[1] or s1[4] < s2[2] or s2[4] < s1[2] then
       return false -- the bounds do not even meet
     end
     local m = dispatch[s1.kind][s2.kind](s1, s2, out or tmpA)
@@ -141,8 +141,7 @@ function S.triking(collider1, collider2, out)
   for i = 1, n1 do
     local a = l1[i]
     if a._dirty then a:_refresh() end
-    local wa = a._w
-    local ax0, ay0, ax1, ay1 = wa[1], wa[2], wa[3], wa[4]
+    local ax0, ay0, ax1, ay1 = a[1], a[2], a[3], a[4] -- (its bounds)
     local row = dispatch[a.kind]
     for j = 1, n2 do
       local b = l2[j]
@@ -150,8 +149,7 @@ function S.triking(collider1, collider2, out)
       -- Bounds meet (closed intervals: an axis-aligned edge or a point has a flat box;
       -- the narrow phase decides touching), as two tests instead of four: fewer trace
       -- exits under LuaJIT.
-      local wb = b._w
-      if min(ax1, wb[3]) >= max(ax0, wb[1]) and min(ay1, wb[4]) >= max(ay0, wb[2]) then
+      if min(ax1, b[3]) >= max(ax0, b[1]) and min(ay1, b[4]) >= max(ay0, b[2]) then
         row[b.kind](a, b, tmp)
         local d = tmp.depth
         if d > bestDepth then -- (false for NaN and for separating results)

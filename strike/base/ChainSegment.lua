@@ -17,8 +17,8 @@
 --- gets wider: cross(p1 - prev, p2 - p1) > 0 (a left turn with y up); likewise at p2. An
 --- open end counts as convex, like the end of a lone edge. The narrow phase
 --- (strike/collide/chain.lua) reads these fields, refreshed with the world vertices:
----   _w[3], _w[4]        n, the segment's own normal (from VertexShape: p1 = _w[1], _w[2],
----                       p2 = _w[6], _w[7])
+---   self[7], self[8]    n, the segment's own normal (from VertexShape: p1 = self[5],
+---                       self[6], p2 = self[10], self[11])
 ---   _g1x, _g1y          at p1: the previous segment's unit normal, or at an open start
 ---                       the outward tangent -(p2 - p1) / len
 ---   _g2x, _g2y          at p2: the next segment's unit normal, or at an open end the

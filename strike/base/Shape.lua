@@ -1,7 +1,9 @@
 --- The abstract base of every shape: a pose (position of the centroid, angle, uniform
 --- scale) and the transforms. Subclasses keep their geometry in local coordinates
 --- (relative to the centroid, unrotated, unscaled) and cache world-space data, refreshed
---- lazily: a transform only marks the shape dirty.
+--- lazily: a transform only marks the shape dirty. The world-space data is the shape's own
+--- array part (bounds in self[1] to self[4], then whatever the subclass keeps), so that
+--- the narrow phase reads one table per shape; a shape's integer keys are strike's.
 local ROOT = (...):match('^(.-)%.base%.[^%.]+$')
 local Object = require(ROOT .. '.class')
 local check = require(ROOT .. '.check')
@@ -26,9 +28,10 @@ function Shape:_setPose(x, y)
   self.kind = self.kind -- an own copy of the class's kind: the dispatch reads it every test
   self._x, self._y = x, y
   self._angle, self._cos, self._sin, self._scale = 0, 1, 0, 1
-  -- World-space data, refreshed when dirty, starts with the bounds: minx, miny, maxx, maxy
-  -- in _w[1] to _w[4] (polygons keep their vertex records after them, see VertexShape).
-  if not self._w then self._w = { x, y, x, y } end
+  -- A shape's array part is its world-space data, refreshed when dirty. It starts with the
+  -- bounds: minx, miny, maxx, maxy in self[1] to self[4] (polygons keep their vertex
+  -- records after them, see VertexShape).
+  if self[1] == nil then self[1], self[2], self[3], self[4] = x, y, x, y end
   self._dirty = true
 end
 
@@ -154,16 +157,14 @@ function Shape:getRadius() return self._radius * self._scale end
 ---@return number x, number y, number w, number h
 function Shape:getBbox()
   if self._dirty then self:_refresh() end
-  local w = self._w
-  return w[1], w[2], w[3] - w[1], w[4] - w[2]
+  return self[1], self[2], self[3] - self[1], self[4] - self[2]
 end
 
 --- Axis-aligned bounds as minimum x, minimum y, maximum x, maximum y.
 ---@return number minx, number miny, number maxx, number maxy
 function Shape:getBounds()
   if self._dirty then self:_refresh() end
-  local w = self._w
-  return w[1], w[2], w[3], w[4]
+  return self[1], self[2], self[3], self[4]
 end
 
 --- The outermost collider that holds this shape, or the shape itself when it has none.

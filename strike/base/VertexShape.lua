@@ -4,13 +4,13 @@
 ---               the vertex relative to the centroid, unrotated and unscaled (l[k], l[k+1];
 ---               positive winding), and the unit outward normal of edge i, from vertex i to
 ---               vertex i + 1 (l[k+2], l[k+3])
----   _w          world-space data, refreshed when dirty, in one array of 5n + 4 numbers: the
----               bounds minx, miny, maxx, maxy (w[1] to w[4], as for every shape, see Shape),
----               then one record per vertex: vertex i's starts at k = 5i and holds x, y
----               (w[k], w[k+1]), the unit normal of edge i (w[k+2], w[k+3]) and the offset
----               of edge i's line along that normal, dot(normal i, vertex i) (w[k+4]). The
----               narrow phase reads one contiguous array per shape, so that a test touches
----               few cache lines.
+---   self[...]   world-space data, refreshed when dirty, in the shape's own array part (5n + 4
+---               numbers): the bounds minx, miny, maxx, maxy (self[1] to self[4], as for every
+---               shape, see Shape), then one record per vertex: vertex i's starts at k = 5i and
+---               holds x, y (self[k], self[k+1]), the unit normal of edge i (self[k+2],
+---               self[k+3]) and the offset of edge i's line along that normal, dot(normal i,
+---               vertex i) (self[k+4]). The narrow phase reads the shape's table and nothing
+---               else, so that a test touches few cache lines and follows no pointers.
 ---   _half       n / 2 when the polygon is centrally symmetric (normal i + n/2 is exactly
 ---               -normal i: rectangles, even regular polygons, edges), else 0; the narrow
 ---               phase then gets two faces' separations from one projection of the other shape.
@@ -61,9 +61,8 @@ function VertexShape:_setVertices(xs, ys, n, cx, cy, area)
   end
   self._n, self._l = n, l
   self._half = symmetricHalf(l, n)
-  local w = {}
-  for k = 1, 5 * n + 4 do w[k] = 0 end
-  self._w = w
+  for k = 1, 5 * n + 4 do self[k] = 0 end
+  for k = #self, 5 * n + 5, -1 do self[k] = nil end
   self._area, self._radius = area, sqrt(r2)
   self:_setPose(cx, cy)
 end
@@ -72,7 +71,7 @@ function VertexShape:_refresh()
   local n = self._n
   local c, s, k = self._cos, self._sin, self._scale
   local x0, y0 = self._x, self._y
-  local l, w = self._l, self._w
+  local l = self._l
   local minx, miny, maxx, maxy = huge, huge, -huge, -huge
   local sc, ss = c * k, s * k
   for i = 1, n do
@@ -86,9 +85,9 @@ function VertexShape:_refresh()
     x, y = l[q + 2], l[q + 3]
     x, y = c * x - s * y, s * x + c * y
     local r = 5 * i
-    w[r], w[r + 1], w[r + 2], w[r + 3], w[r + 4] = px, py, x, y, x * px + y * py
+    self[r], self[r + 1], self[r + 2], self[r + 3], self[r + 4] = px, py, x, y, x * px + y * py
   end
-  w[1], w[2], w[3], w[4] = minx, miny, maxx, maxy
+  self[1], self[2], self[3], self[4] = minx, miny, maxx, maxy
   self._dirty = false
 end
 
@@ -107,8 +106,8 @@ function VertexShape:getVertexCount() return self._n end
 function VertexShape:getVertex(i)
   if not inRange(i, self._n) then return nil end
   if self._dirty then self:_refresh() end
-  local w, k = self._w, 5 * i
-  return w[k], w[k + 1]
+  local k = 5 * i
+  return self[k], self[k + 1]
 end
 
 --- Edge i (vertex i to vertex i + 1, wrapping), as x1, y1, x2, y2; nil when out of range.
@@ -119,8 +118,8 @@ function VertexShape:getEdge(i)
   local n = self._n
   if not inRange(i, n) then return nil end
   if self._dirty then self:_refresh() end
-  local w, k, l = self._w, 5 * i, i < n and 5 * i + 5 or 5
-  return w[k], w[k + 1], w[l], w[l + 1]
+  local k, l = 5 * i, i < n and 5 * i + 5 or 5
+  return self[k], self[k + 1], self[l], self[l + 1]
 end
 
 --- Unit outward normal of edge i in world space; nil when out of range.
@@ -129,8 +128,8 @@ end
 function VertexShape:getNormal(i)
   if not inRange(i, self._n) then return nil end
   if self._dirty then self:_refresh() end
-  local w, k = self._w, 5 * i
-  return w[k + 2], w[k + 3]
+  local k = 5 * i
+  return self[k + 2], self[k + 3]
 end
 
 --- World vertices as a flat list {x1, y1, x2, y2, ...}, ready for love.graphics.polygon.
@@ -140,9 +139,9 @@ end
 function VertexShape:getVertices(out)
   if self._dirty then self:_refresh() end
   out = out or {}
-  local n, w = self._n, self._w
+  local n = self._n
   for i = 1, n do
-    out[2 * i - 1], out[2 * i] = w[5 * i], w[5 * i + 1]
+    out[2 * i - 1], out[2 * i] = self[5 * i], self[5 * i + 1]
   end
   for i = #out, 2 * n + 1, -1 do out[i] = nil end
   return out, n
@@ -155,10 +154,9 @@ function VertexShape:project(nx, ny)
   number(nx, 'strike.Shape:project', 'nx')
   number(ny, 'strike.Shape:project', 'ny')
   if self._dirty then self:_refresh() end
-  local w = self._w
   local lo, hi = huge, -huge
   for k = 5, 5 * self._n, 5 do
-    local d = w[k] * nx + w[k + 1] * ny
+    local d = self[k] * nx + self[k + 1] * ny
     if d < lo then lo = d end
     if d > hi then hi = d end
   end
@@ -170,11 +168,10 @@ end
 ---@return integer
 function VertexShape:getSupport(nx, ny)
   if self._dirty then self:_refresh() end
-  local w = self._w
   local best, bi = -huge, 1
   for i = 1, self._n do
     local k = 5 * i
-    local d = w[k] * nx + w[k + 1] * ny
+    local d = self[k] * nx + self[k + 1] * ny
     if d > best then best, bi = d, i end
   end
   return bi
@@ -188,9 +185,8 @@ function VertexShape:containsPoint(x, y)
   x, y = Shape._point(x, y, 'strike.Shape:containsPoint')
   if self._dirty then self:_refresh() end
   if self._n < 3 then return false end
-  local w = self._w
   for k = 5, 5 * self._n, 5 do
-    if (x - w[k]) * w[k + 2] + (y - w[k + 1]) * w[k + 3] >= 0 then return false end
+    if (x - self[k]) * self[k + 2] + (y - self[k + 1]) * self[k + 3] >= 0 then return false end
   end
   return true
 end
@@ -200,8 +196,8 @@ local function edgeIter(self, i)
   i = i + 1
   local n = self._n
   if i > n then return nil end
-  local w, k, l = self._w, 5 * i, i < n and 5 * i + 5 or 5
-  return i, w[k], w[k + 1], w[l], w[l + 1]
+  local k, l = 5 * i, i < n and 5 * i + 5 or 5
+  return i, self[k], self[k + 1], self[l], self[l + 1]
 end
 
 --- Iterate over the edges: `for i, x1, y1, x2, y2 in shape:ipairs() do`.
@@ -217,8 +213,8 @@ local function vecIter(self, i)
   i = i + 1
   local n = self._n
   if i > n then return nil end
-  local w, k, l = self._w, 5 * i, i < n and 5 * i + 5 or 5
-  return i, w[l] - w[k], w[l + 1] - w[k + 1]
+  local k, l = 5 * i, i < n and 5 * i + 5 or 5
+  return i, self[l] - self[k], self[l + 1] - self[k + 1]
 end
 
 --- Iterate over edge vectors: `for i, dx, dy in shape:vecs() do`. Allocates nothing.
@@ -233,10 +229,9 @@ end
 ---@return number
 function VertexShape:_farthest(px, py)
   if self._dirty then self:_refresh() end
-  local w = self._w
   local best = 0
   for k = 5, 5 * self._n, 5 do
-    local dx, dy = w[k] - px, w[k + 1] - py
+    local dx, dy = self[k] - px, self[k + 1] - py
     local d = dx * dx + dy * dy
     if d > best then best = d end
   end

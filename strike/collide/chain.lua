@@ -42,7 +42,7 @@ local TOL = 1e-12
 
 -- Is m (unit, from S toward the other shape) admissible for S? (S is refreshed.)
 local function admissible(S, mx, my)
-  local nx, ny = S._w[7], S._w[8]
+  local nx, ny = S[7], S[8]
   local c = nx * my - ny * mx -- cross(n, m) = m . e: < 0 leans toward p1, > 0 toward p2
   if c <= TOL and c >= -TOL and nx * mx + ny * my > 0 then return true end
   if c < 0 then
@@ -61,12 +61,11 @@ chain.admissible = admissible
 -- Steps 4 and 5 for a polygon P: false when the neighbour owns the contact, else the depth
 -- of the push along n.
 local function polygonVerdict(S, P, mx, my)
-  local w = S._w
-  local nx, ny, x1, y1 = w[7], w[8], w[5], w[6]
-  local pw, last = P._w, 5 * P._n
+  local nx, ny, x1, y1 = S[7], S[8], S[5], S[6]
+  local last = 5 * P._n
   local sepN = huge
   for r = 5, last, 5 do
-    local s = nx * (pw[r] - x1) + ny * (pw[r + 1] - y1)
+    local s = nx * (P[r] - x1) + ny * (P[r + 1] - y1)
     if s < sepN then sepN = s end
   end
   local c = nx * my - ny * mx
@@ -74,7 +73,7 @@ local function polygonVerdict(S, P, mx, my)
     local gx, gy = S._g1x, S._g1y
     local reach, sepG = huge, huge -- reach: min over P of e . (v - p1), e = (-ny, nx)
     for k = 5, last, 5 do
-      local dx, dy = pw[k] - x1, pw[k + 1] - y1
+      local dx, dy = P[k] - x1, P[k + 1] - y1
       local r, s = nx * dy - ny * dx, gx * dx + gy * dy
       if r < reach then reach = r end
       if s < sepG then sepG = s end
@@ -82,10 +81,10 @@ local function polygonVerdict(S, P, mx, my)
     if reach < 0 and sepG > sepN then return false end
   elseif c > 0 and S._hasNext and S._convex2 then
     local gx, gy = S._g2x, S._g2y
-    local x2, y2 = w[10], w[11]
+    local x2, y2 = S[10], S[11]
     local reach, sepG = -huge, huge -- reach: max over P of e . (v - p2)
     for k = 5, last, 5 do
-      local dx, dy = pw[k] - x2, pw[k + 1] - y2
+      local dx, dy = P[k] - x2, P[k + 1] - y2
       local r, s = nx * dy - ny * dx, gx * dx + gy * dy
       if r > reach then reach = r end
       if s < sepG then sepG = s end
@@ -97,8 +96,7 @@ end
 
 -- The same for a circle C.
 local function circleVerdict(S, C, mx, my)
-  local w = S._w
-  local nx, ny, x1, y1 = w[7], w[8], w[5], w[6]
+  local nx, ny, x1, y1 = S[7], S[8], S[5], S[6]
   local cx, cy, r = C._x, C._y, C._r * C._scale
   local dx, dy = cx - x1, cy - y1
   local sepN = nx * dx + ny * dy - r
@@ -106,7 +104,7 @@ local function circleVerdict(S, C, mx, my)
   if c < 0 and S._hasPrev and S._convex1 then
     if nx * dy - ny * dx - r < 0 and S._g1x * dx + S._g1y * dy - r > sepN then return false end
   elseif c > 0 and S._hasNext and S._convex2 then
-    dx, dy = cx - w[10], cy - w[11]
+    dx, dy = cx - S[10], cy - S[11]
     if nx * dy - ny * dx + r > 0 and S._g2x * dx + S._g2y * dy - r > sepN then return false end
   end
   return -sepN
@@ -114,8 +112,7 @@ end
 
 -- Is the point (x, y) behind S's line?
 local function behind(S, x, y)
-  local w = S._w
-  return w[7] * (x - w[5]) + w[8] * (y - w[6]) < 0
+  return S[7] * (x - S[5]) + S[8] * (y - S[6]) < 0
 end
 
 -- Steps 2 to 5 of the header, after the ordinary edge test filled `out` for (S, B), or
@@ -123,7 +120,7 @@ end
 local function ghostRules(S, B, out, flip, verdict)
   if out.separating then return out end
   local k = flip and -1 or 1 -- the MTV points from the first argument to the second
-  local nx, ny = k * S._w[7], k * S._w[8]
+  local nx, ny = k * S[7], k * S[8]
   local first, second = S, B
   if flip then first, second = B, S end
   if behind(S, B._x, B._y) then return result(out, first, second, nx, ny, 0, k) end
@@ -165,7 +162,7 @@ end
 ---@return table out
 function chain.chainChain(A, B, out)
   if A._dirty then A:_refresh() end
-  return result(out, A, B, A._w[7], A._w[8], 0, 1)
+  return result(out, A, B, A[7], A[8], 0, 1)
 end
 
 return chain

@@ -31,11 +31,10 @@ end
 
 -- The face of polygon P whose normal is most aligned with (nx, ny), and that cosine.
 local function alignedFace(P, nx, ny)
-  local w = P._w
   local best, bi = -huge, 1
   for i = 1, P._n do
     local k = 5 * i
-    local d = w[k + 2] * nx + w[k + 3] * ny
+    local d = P[k + 2] * nx + P[k + 3] * ny
     if d > best then best, bi = d, i end
   end
   return bi, best
@@ -58,16 +57,16 @@ end
 -- Clip and keep, with R the reference polygon (face r) and I the incident one (face f).
 -- Returns the number of points written. `side` is 0 or 1 (see the header).
 local function clipFaces(out, R, r, I, f, side)
-  local rw, rk = R._w, 5 * r
+  local rk = 5 * r
   local rl = r < R._n and rk + 5 or 5
-  local v1x, v1y, v2x, v2y = rw[rk], rw[rk + 1], rw[rl], rw[rl + 1]
-  local nx, ny = rw[rk + 2], rw[rk + 3]
+  local v1x, v1y, v2x, v2y = R[rk], R[rk + 1], R[rl], R[rl + 1]
+  local nx, ny = R[rk + 2], R[rk + 3]
   local tx, ty = v2x - v1x, v2y - v1y
   local len = sqrt(tx * tx + ty * ty)
   tx, ty = tx / len, ty / len
-  local iw, ik = I._w, 5 * f
+  local ik = 5 * f
   local il = f < I._n and ik + 5 or 5
-  local ax, ay, bx, by = iw[ik], iw[ik + 1], iw[il], iw[il + 1]
+  local ax, ay, bx, by = I[ik], I[ik + 1], I[il], I[il + 1]
   local ca, cb = 0, 1 -- which corner each end is (see the header)
   -- side plane 1: dot(t, p - v1) >= 0
   local lo = tx * v1x + ty * v1y
@@ -96,15 +95,15 @@ end
 
 -- The feature of polygon P nearest the point (cx, cy) as an id: 2 * face or 2 * vertex + 1.
 local function circleFeature(P, cx, cy)
-  local n, w = P._n, P._w
+  local n = P._n
   local best, bi = -huge, 1
   for i = 1, n do
     local k = 5 * i
-    local s = w[k + 2] * (cx - w[k]) + w[k + 3] * (cy - w[k + 1])
+    local s = P[k + 2] * (cx - P[k]) + P[k + 3] * (cy - P[k + 1])
     if s > best then best, bi = s, i end
   end
   local j = bi < n and bi + 1 or 1
-  local x1, y1, x2, y2 = w[5 * bi], w[5 * bi + 1], w[5 * j], w[5 * j + 1]
+  local x1, y1, x2, y2 = P[5 * bi], P[5 * bi + 1], P[5 * j], P[5 * j + 1]
   if (cx - x1) * (x2 - x1) + (cy - y1) * (y2 - y1) <= 0 then return 2 * bi + 1 end
   if (cx - x2) * (x1 - x2) + (cy - y2) * (y1 - y2) <= 0 then return 2 * j + 1 end
   return 2 * bi
@@ -134,21 +133,18 @@ function contact.manifold(mtv, out)
   local fb, alignB = alignedFace(B, -nx, -ny)
   local k
   if alignB > alignA + 1e-6 then
-    local w = B._w
-    k = clipFaces(out, B, fb, A, (alignedFace(A, -w[5 * fb + 2], -w[5 * fb + 3])), 1)
+    k = clipFaces(out, B, fb, A, (alignedFace(A, -B[5 * fb + 2], -B[5 * fb + 3])), 1)
   else
-    local w = A._w
-    k = clipFaces(out, A, fa, B, (alignedFace(B, -w[5 * fa + 2], -w[5 * fa + 3])), 0)
+    k = clipFaces(out, A, fa, B, (alignedFace(B, -A[5 * fa + 2], -A[5 * fa + 3])), 0)
   end
   if k == 0 then
     -- Round-off left nothing behind the face: report the deepest vertex of B.
-    local w = B._w
     local best, bj = huge, 1
     for j = 1, B._n do
-      local p = nx * w[5 * j] + ny * w[5 * j + 1]
+      local p = nx * B[5 * j] + ny * B[5 * j + 1]
       if p < best then best, bj = p, j end
     end
-    setPoint(out, 1, w[5 * bj] + nx * depth / 2, w[5 * bj + 1] + ny * depth / 2, depth, bj)
+    setPoint(out, 1, B[5 * bj] + nx * depth / 2, B[5 * bj + 1] + ny * depth / 2, depth, bj)
     k = 1
   end
   return k

@@ -105,13 +105,12 @@ local unit = ray.unit
 ---@return number|nil lo, number hi, integer fin, integer fout
 function ray.polygon(s, ox, oy, ux, uy)
   if s._dirty then s:_refresh() end
-  local w = s._w
   local tin, tout, fin, fout = -huge, huge, 0, 0
   for i = 1, s._n do
     local k = 5 * i
-    local nx, ny = w[k + 2], w[k + 3]
+    local nx, ny = s[k + 2], s[k + 3]
     local den = nx * ux + ny * uy
-    local num = w[k + 4] - (nx * ox + ny * oy)
+    local num = s[k + 4] - (nx * ox + ny * oy)
     if den < 0 then -- entering: t >= num / den
       local t = num / den
       if t > tin then
@@ -142,9 +141,9 @@ local polygonClip = ray.polygon
 ---@return number|nil lo, number hi, number cross
 function ray.segment(s, ox, oy, ux, uy)
   if s._dirty then s:_refresh() end
-  local w = s._w -- p1 = (w[5], w[6]), p2 = (w[10], w[11])
-  local ax, ay = w[5] - ox, w[6] - oy -- p1 relative to the origin
-  local ex, ey = w[10] - w[5], w[11] - w[6]
+  -- (p1 = (s[5], s[6]), p2 = (s[10], s[11]))
+  local ax, ay = s[5] - ox, s[6] - oy -- p1 relative to the origin
+  local ex, ey = s[10] - s[5], s[11] - s[6]
   -- o + t u = p1 + s e: t = cross(a, e) / cross(u, e), s = cross(a, u) / cross(u, e).
   -- (e is scaled to components of at most 1, so that cross(a, e) cannot overflow.)
   local k = abs(ex)
@@ -161,7 +160,7 @@ function ray.segment(s, ox, oy, ux, uy)
   end
   if cau ~= 0 then return nil end -- parallel, on another line
   local t1 = ax * ux + ay * uy
-  local t2 = (w[10] - ox) * ux + (w[11] - oy) * uy
+  local t2 = (s[10] - ox) * ux + (s[11] - oy) * uy
   if t1 > t2 then t1, t2 = t2, t1 end
   if not (t2 >= 0) or t2 == huge then return nil end -- luacheck: ignore 581 (NaN reads as a miss)
   return t1, t2, 0
@@ -280,9 +279,9 @@ function ray.cast(s, ox, oy, ux, uy, maxDistance)
     if lo >= 0 then t = lo else t = hi end
     if t > maxDistance then return nil end
     if cross > 0 then -- (the sign of cross(u, e) is the sign of dot(u, normal 1))
-      nx, ny = -s._w[7], -s._w[8]
+      nx, ny = -s[7], -s[8]
     elseif cross < 0 then
-      nx, ny = s._w[7], s._w[8]
+      nx, ny = s[7], s[8]
     elseif lo >= 0 then
       nx, ny = -ux, -uy
     else
@@ -294,7 +293,7 @@ function ray.cast(s, ox, oy, ux, uy, maxDistance)
     local f
     if lo >= 0 then t, f = lo, fin else t, f = hi, fout end
     if t > maxDistance then return nil end
-    nx, ny = s._w[5 * f + 2], s._w[5 * f + 3]
+    nx, ny = s[5 * f + 2], s[5 * f + 3]
   end
   if t == 0 then t = 0.0 end
   return t, ox + t * ux, oy + t * uy, nx, ny

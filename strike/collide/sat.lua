@@ -51,20 +51,20 @@ sat.result = result
 -- An Edge's two faces point opposite ways: a half turn, after which the old support is
 -- the new maximum, so each of them gets a full scan instead.
 local function maxSeparationWalk(A, B)
-  local a, b, na, nb = A._w, B._w, A._n, B._n
+  local na, nb = A._n, B._n
   local best, bi, j = -huge, 1, 1
   local pj
   local first = na == 2 and 2 or 1 -- faces scanned in full
   for i = 1, first do
     local k = 5 * i
-    local nx, ny = a[k + 2], a[k + 3]
-    j, pj = 1, nx * b[5] + ny * b[6]
+    local nx, ny = A[k + 2], A[k + 3]
+    j, pj = 1, nx * B[5] + ny * B[6]
     for jj = 2, nb do
       local r = 5 * jj
-      local p = nx * b[r] + ny * b[r + 1]
+      local p = nx * B[r] + ny * B[r + 1]
       if p < pj then j, pj = jj, p end
     end
-    local s = pj - a[k + 4]
+    local s = pj - A[k + 4]
     if s > best then
       best, bi = s, i
       if s >= 0 then return s, i end
@@ -72,16 +72,16 @@ local function maxSeparationWalk(A, B)
   end
   for i = first + 1, na do
     local k = 5 * i
-    local nx, ny = a[k + 2], a[k + 3]
+    local nx, ny = A[k + 2], A[k + 3]
     local r = 5 * j
-    pj = nx * b[r] + ny * b[r + 1]
+    pj = nx * B[r] + ny * B[r + 1]
     while true do
       local jj = j < nb and j + 1 or 1
       r = 5 * jj
-      local p = nx * b[r] + ny * b[r + 1]
+      local p = nx * B[r] + ny * B[r + 1]
       if p < pj then j, pj = jj, p else break end
     end
-    local s = pj - a[k + 4]
+    local s = pj - A[k + 4]
     if s > best then
       best, bi = s, i
       if s >= 0 then return s, i end
@@ -98,7 +98,7 @@ end
 -- 308k against 164k pairs/s).
 local min, max = math.min, math.max
 local function maxSeparationScan(A, B)
-  local a, b, na, nb = A._w, B._w, A._n, B._n
+  local na, nb = A._n, B._n
   local last = 5 * nb -- B's last vertex record
   local best, bi = -huge, 1
   local h = A._half
@@ -110,17 +110,17 @@ local function maxSeparationScan(A, B)
     local sepI, sepS = 0, 0 -- the first separating face of the second half, if any
     for i = 1, h do
       local k = 5 * i
-      local nx, ny = a[k + 2], a[k + 3]
+      local nx, ny = A[k + 2], A[k + 3]
       local lo, hi = huge, -huge
       for r = 5, last, 5 do
-        local p = nx * b[r] + ny * b[r + 1]
+        local p = nx * B[r] + ny * B[r + 1]
         lo, hi = min(lo, p), max(hi, p)
       end
-      local s = lo - a[k + 4]
+      local s = lo - A[k + 4]
       if s >= 0 then return s, i end
       if s > best or (s == best and i < bi) then best, bi = s, i end
       local f = i + h
-      s = -hi - a[5 * f + 4]
+      s = -hi - A[5 * f + 4]
       if s >= 0 then
         if sepI == 0 then sepI, sepS = f, s end
       elseif s > best or (s == best and f < bi) then
@@ -132,12 +132,12 @@ local function maxSeparationScan(A, B)
   end
   for i = 1, na do
     local k = 5 * i
-    local nx, ny = a[k + 2], a[k + 3]
+    local nx, ny = A[k + 2], A[k + 3]
     local s = huge
     for r = 5, last, 5 do
-      s = min(s, nx * b[r] + ny * b[r + 1])
+      s = min(s, nx * B[r] + ny * B[r + 1])
     end
-    s = s - a[k + 4]
+    s = s - A[k + 4]
     if s > best then
       best, bi = s, i
       if s >= 0 then return s, i end
@@ -165,37 +165,35 @@ function sat.polygonPolygon(A, B, out)
   if A._dirty then A:_refresh() end
   if B._dirty then B:_refresh() end
   local sA, iA = maxSeparation(A, B)
-  local a = A._w
-  if sA >= 0 then return result(out, A, B, a[5 * iA + 2], a[5 * iA + 3], -sA, iA) end
+  if sA >= 0 then return result(out, A, B, A[5 * iA + 2], A[5 * iA + 3], -sA, iA) end
   local sB, iB = maxSeparation(B, A)
   if sB > sA then
-    local b = B._w
-    return result(out, A, B, -b[5 * iB + 2], -b[5 * iB + 3], -sB, -iB)
+    return result(out, A, B, -B[5 * iB + 2], -B[5 * iB + 3], -sB, -iB)
   end
-  return result(out, A, B, a[5 * iA + 2], a[5 * iA + 3], -sA, iA)
+  return result(out, A, B, A[5 * iA + 2], A[5 * iA + 3], -sA, iA)
 end
 
 -- Polygon P against circle C; when `flip`, report it as C against P.
 local function polygonCircle(P, C, out, flip)
   if P._dirty then P:_refresh() end
   local cx, cy, r = C._x, C._y, C._r * C._scale
-  local n, w = P._n, P._w
+  local n = P._n
   local best, bi = -huge, 1
   for i = 1, n do
     local k = 5 * i
-    local s = w[k + 2] * (cx - w[k]) + w[k + 3] * (cy - w[k + 1])
+    local s = P[k + 2] * (cx - P[k]) + P[k + 3] * (cy - P[k + 1])
     if s > best then
       best, bi = s, i
       if s >= r then break end
     end
   end
   local k = 5 * bi
-  local nx, ny, depth, edge = w[k + 2], w[k + 3], r - best, bi
+  local nx, ny, depth, edge = P[k + 2], P[k + 3], r - best, bi
   if (best > 0 or n == 2) and best < r then
     -- the centre is outside face bi (or, for an edge, anywhere on its line): the closest
     -- feature is the face or one of its ends
     local l = bi < n and k + 5 or 5
-    local x1, y1, x2, y2 = w[k], w[k + 1], w[l], w[l + 1]
+    local x1, y1, x2, y2 = P[k], P[k + 1], P[l], P[l + 1]
     local vx, vy
     if (cx - x1) * (x2 - x1) + (cy - y1) * (y2 - y1) <= 0 then
       vx, vy = x1, y1

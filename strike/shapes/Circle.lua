@@ -30,8 +30,7 @@ end
 function Circle:_refresh()
   local r = self._r * self._scale
   local x, y = self._x, self._y
-  local w = self._w
-  w[1], w[2], w[3], w[4] = x - r, y - r, x + r, y + r
+  self[1], self[2], self[3], self[4] = x - r, y - r, x + r, y + r
   self._dirty = false
 end
 
@@ -96,11 +95,10 @@ local function axisToward(self, other)
   if other and other._n then
     if other._dirty then other:_refresh() end
     local best = math.huge
-    local w = other._w
     for k = 5, 5 * other._n, 5 do
-      local dx, dy = w[k] - cx, w[k + 1] - cy
+      local dx, dy = other[k] - cx, other[k + 1] - cy
       local d = dx * dx + dy * dy
-      if d < best then best, tx, ty = d, w[k], w[k + 1] end
+      if d < best then best, tx, ty = d, other[k], other[k + 1] end
     end
   elseif other and other._x then
     tx, ty = other._x, other._y
