@@ -31,7 +31,9 @@ function Shape:_setPose(x, y)
   -- A shape's array part is its world-space data, refreshed when dirty. It starts with the
   -- bounds: minx, miny, maxx, maxy in self[1] to self[4] (polygons keep their vertex
   -- records after them, see VertexShape).
-  if self[1] == nil then self[1], self[2], self[3], self[4] = x, y, x, y end
+  if self[1] == nil then
+    for k = 1, 4 do self[k] = 0 end -- (refreshed before any use: the shape starts dirty)
+  end
   self._dirty = true
 end
 

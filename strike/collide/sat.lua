@@ -176,7 +176,8 @@ end
 -- Polygon P against circle C; when `flip`, report it as C against P.
 local function polygonCircle(P, C, out, flip)
   if P._dirty then P:_refresh() end
-  local cx, cy, r = C._x, C._y, C._r * C._scale
+  if C._dirty then C:_refresh() end
+  local cx, cy, r = C[5], C[6], C[7] -- (the circle's world centre and radius)
   local n = P._n
   local best, bi = -huge, 1
   for i = 1, n do
@@ -226,9 +227,11 @@ function sat.circlePolygon(C, P, out) return polygonCircle(P, C, out, true) end
 ---@param A strike.Circle @param B strike.Circle @param out table
 ---@return table out
 function sat.circleCircle(A, B, out)
-  local dx, dy = B._x - A._x, B._y - A._y
+  if A._dirty then A:_refresh() end
+  if B._dirty then B:_refresh() end
+  local dx, dy = B[5] - A[5], B[6] - A[6] -- (world centres and radii: see Circle)
   local d = sqrt(dx * dx + dy * dy)
-  local r = A._r * A._scale + B._r * B._scale
+  local r = A[7] + B[7]
   if d > 0 then
     return result(out, A, B, dx / d, dy / d, r - d, 0)
   end

@@ -1,4 +1,5 @@
---- A true circle.
+--- A true circle. Its world-space data (its array part, see Shape) is the bounds, then the
+--- centre and the radius: self[5], self[6], self[7], which the narrow phase reads.
 local ROOT = (...):match('^(.-)%.shapes%.[^%.]+$')
 local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
@@ -23,6 +24,7 @@ function Circle:new(x, y, r, angle)
   self._r = r
   self._area = pi * r * r
   self._radius = r
+  for k = 1, 7 do self[k] = 0 end -- (refreshed before any use: the shape starts dirty)
   self:_setPose(x, y)
   if angle ~= 0 then self:rotate(angle) end
 end
@@ -31,6 +33,7 @@ function Circle:_refresh()
   local r = self._r * self._scale
   local x, y = self._x, self._y
   self[1], self[2], self[3], self[4] = x - r, y - r, x + r, y + r
+  self[5], self[6], self[7] = x, y, r
   self._dirty = false
 end
 
