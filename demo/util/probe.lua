@@ -13,8 +13,8 @@ local segmentDistance = geom.segmentDistance
 
 local probe = {}
 
---- Clearance a probe needs from every edge and mark, in pixels (the brief asks for 4; one
---- more covers the half pixel between a pixel's centre and its corner, and antialiasing).
+--- Clearance a probe needs from every edge and mark, in pixels: 4, and one more for the half
+--- pixel between a pixel's centre and its corner, and for antialiasing.
 probe.MARGIN = 5
 -- Clearance beyond which all candidates count as equally good (keeps the search short).
 local CAP = 12
