@@ -106,12 +106,20 @@ function S.triking(collider1, collider2, out)
     s2 = type(collider2) == 'table' and collider2._single
     if s2 == nil and dispatch[collider2.kind] then s2 = collider2 end
   end
+  local l1, n1, l2, n2
+  if not s2 then
+    l1, n1 = leavesOf(collider1, single1, 'strike.triking', 1)
+    l2, n2 = leavesOf(collider2, single2, 'strike.triking', 2)
+  end
+  if out ~= nil and type(out) ~= 'table' then checkOut('strike.triking', out, 3) end
+  local r1, r2 = collider1, collider2
+  while r1.parent do r1 = r1.parent end
+  while r2.parent do r2 = r2.parent end
+  if r1 == r2 then -- every leaf pair would share a root
+    single1[1], single2[1] = nil, nil
+    return false
+  end
   if s2 then
-    if out ~= nil and type(out) ~= 'table' then checkOut('strike.triking', out, 3) end
-    local r1, r2 = collider1, collider2
-    while r1.parent do r1 = r1.parent end
-    while r2.parent do r2 = r2.parent end
-    if r1 == r2 then return false end
     if s1._dirty then s1:_refresh() end
     if s2._dirty then s2:_refresh() end
     -- (a shape's bounds are its entries 1 to 4: minx, miny, maxx, maxy)
@@ -123,16 +131,6 @@ function S.triking(collider1, collider2, out)
     if not out then out = MTV.set(MTV(), m) end
     out.collider, out.collided = r1, r2
     return out
-  end
-  local l1, n1 = leavesOf(collider1, single1, 'strike.triking', 1)
-  local l2, n2 = leavesOf(collider2, single2, 'strike.triking', 2)
-  if out ~= nil and type(out) ~= 'table' then checkOut('strike.triking', out, 3) end
-  local r1, r2 = collider1, collider2
-  while r1.parent do r1 = r1.parent end
-  while r2.parent do r2 = r2.parent end
-  if r1 == r2 then -- every leaf pair would share a root
-    single1[1], single2[1] = nil, nil
-    return false
   end
   -- Test into `tmp`; a deeper result becomes `best` and the other buffer becomes `tmp`.
   -- With an `out` table it is one of the two buffers, so the usual single hit needs no copy.
