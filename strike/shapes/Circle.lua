@@ -24,9 +24,15 @@ function Circle:new(x, y, r, angle)
   self._r = r
   self._area = pi * r * r
   self._radius = r
-  for k = 1, 7 do self[k] = 0 end -- (refreshed before any use: the shape starts dirty)
   self:_setPose(x, y)
   if angle ~= 0 then self:rotate(angle) end
+end
+
+--- The pose, and the seven world-data slots laid out at construction (Point too).
+---@param x number @param y number
+function Circle:_setPose(x, y)
+  for k = 1, 7 do self[k] = 0 end -- (refreshed before any use: the shape starts dirty)
+  Shape._setPose(self, x, y)
 end
 
 function Circle:_refresh()

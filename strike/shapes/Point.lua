@@ -15,7 +15,6 @@ function Point:new(x, y)
   check.number(x, 'strike.Point', 'x')
   check.number(y, 'strike.Point', 'y')
   self._r, self._area, self._radius = 0, 0, 0
-  for k = 1, 7 do self[k] = 0 end -- (a circle's world data, see Circle; refreshed before use)
   self:_setPose(x, y)
 end
 
