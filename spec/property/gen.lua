@@ -12,6 +12,18 @@ local function logRange(rng, a, b)
 end
 gen.logRange = logRange
 
+-- The hull of the k points in pts = {x1, y1, ...} as a flat vertex list (ConvexPolygon
+-- rejects interior points, so strike is handed only the hull), or nil when it is flat.
+local function hullOf(pts, k)
+  local xs, ys = {}, {}
+  for i = 1, k do xs[i], ys[i] = pts[2 * i - 1], pts[2 * i] end
+  local hx, hy, h = brute.hull(xs, ys, k)
+  if h < 3 then return nil end
+  local flat = {}
+  for i = 1, h do flat[2 * i - 1], flat[2 * i] = hx[i], hy[i] end
+  return flat
+end
+
 --- A random convex shape of the given kind centred near (cx, cy).
 --- Kinds: 'rect', 'ngon', 'hull', 'ellipse', 'circle', 'edge'.
 function gen.shape(S, rng, kind, cx, cy)
@@ -30,14 +42,9 @@ function gen.shape(S, rng, kind, cx, cy)
         local a, r = rng:range(0, 2 * pi), size * sqrt(rng:next())
         pts[2 * i - 1], pts[2 * i] = cx + r * cos(a), cy + r * sin(a)
       end
-      -- random points are rarely convex in position: build the hull of them ourselves by
-      -- handing strike only the hull vertices (ConvexPolygon rejects interior points)
-      local xs, ys = {}, {}
-      for i = 1, k do xs[i], ys[i] = pts[2 * i - 1], pts[2 * i] end
-      local hx, hy, h = brute.hull(xs, ys, k)
-      if h >= 3 then
-        local flat = {}
-        for i = 1, h do flat[2 * i - 1], flat[2 * i] = hx[i], hy[i] end
+      -- random points are rarely convex in position: hand strike their hull
+      local flat = hullOf(pts, k)
+      if flat then
         local ok, shape = pcall(S.hapes.ConvexPolygon, flat)
         if ok then return shape end
       end
@@ -72,14 +79,8 @@ function gen.gridShape(S, rng, kind, cx, cy)
     while true do
       local pts, k = {}, rng:int(3, 6)
       for i = 1, k do pts[2 * i - 1], pts[2 * i] = cx + rng:int(-3, 3), cy + rng:int(-3, 3) end
-      local xs, ys = {}, {}
-      for i = 1, k do xs[i], ys[i] = pts[2 * i - 1], pts[2 * i] end
-      local hx, hy, h = brute.hull(xs, ys, k)
-      if h >= 3 then
-        local flat = {}
-        for i = 1, h do flat[2 * i - 1], flat[2 * i] = hx[i], hy[i] end
-        return S.hapes.ConvexPolygon(flat)
-      end
+      local flat = hullOf(pts, k)
+      if flat then return S.hapes.ConvexPolygon(flat) end
     end
   end
   -- anything else: an axis-aligned rectangle with integer corners
