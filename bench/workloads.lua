@@ -69,6 +69,32 @@ function W.strikeShape(d)
   error('no such shape kind ' .. tostring(d.kind))
 end
 
+--- The vertices of a 'rect' or 'ngon' description as a flat list {x1, y1, ...}: about its
+--- own centre and unrotated, or, when `placed`, turned by its angle and moved to its centre
+--- (for the peers' adapters, which build polygons from vertices).
+---@param d table @param placed boolean|nil
+---@return number[]
+function W.vertices(d, placed)
+  local v
+  if d.kind == 'rect' then
+    local hx, hy = d.w / 2, d.h / 2
+    v = { -hx, -hy, hx, -hy, hx, hy, -hx, hy }
+  else
+    v = {}
+    for i = 1, d.n do
+      local a = -2 * math.pi * i / d.n
+      v[#v + 1], v[#v + 2] = d.r * math.sin(a), d.r * math.cos(a)
+    end
+  end
+  if placed then
+    local c, s = math.cos(d.angle), math.sin(d.angle)
+    for j = 1, #v, 2 do
+      v[j], v[j + 1] = d.x + c * v[j] - s * v[j + 1], d.y + s * v[j] + c * v[j + 1]
+    end
+  end
+  return v
+end
+
 local function bounds(list)
   local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
   for i = 1, #list do

@@ -1,6 +1,7 @@
 --- HC (vrld/HC), through its public shape API: shapes.newPolygonShape / newCircleShape
 --- and shape:collidesWith (GJK + EPA). Loaded from $STRIKE_PEERS/HC; never committed.
 local root = ...
+local W = require('bench.workloads')
 local A = { name = 'HC' }
 
 function A.load(peers)
@@ -13,32 +14,11 @@ function A.load(peers)
   return true
 end
 
-local function vertices(d)
-  local pts = {}
-  if d.kind == 'rect' then
-    local c, s = math.cos(d.angle), math.sin(d.angle)
-    local hx, hy = d.w / 2, d.h / 2
-    local corners = { -hx, -hy, hx, -hy, hx, hy, -hx, hy }
-    for i = 1, 8, 2 do
-      local x, y = corners[i], corners[i + 1]
-      pts[#pts + 1], pts[#pts + 2] = d.x + c * x - s * y, d.y + s * x + c * y
-    end
-  elseif d.kind == 'ngon' then
-    for i = 1, d.n do
-      local a = -2 * math.pi * i / d.n
-      local x, y = d.r * math.sin(a), d.r * math.cos(a)
-      local c, s = math.cos(d.angle), math.sin(d.angle)
-      pts[#pts + 1], pts[#pts + 2] = d.x + c * x - s * y, d.y + s * x + c * y
-    end
-  end
-  return pts
-end
-
 local unpack = table.unpack or unpack -- luacheck: ignore 113 143
 
 local function build(d)
   if d.kind == 'circle' then return A.shapes.newCircleShape(d.x, d.y, d.r) end
-  if d.kind == 'rect' or d.kind == 'ngon' then return A.shapes.newPolygonShape(unpack(vertices(d))) end
+  if d.kind == 'rect' or d.kind == 'ngon' then return A.shapes.newPolygonShape(unpack(W.vertices(d, true))) end
   return nil -- HC has no segment and no compound of convex shapes
 end
 

@@ -26,6 +26,7 @@
 local A = { name = 'slick' }
 
 local jit = rawget(_G, 'jit')
+local W = require('bench.workloads')
 local slick, cache
 
 function A.load(peers, folder)
@@ -43,27 +44,13 @@ end
 
 local unpack = table.unpack or unpack -- luacheck: ignore 113 143
 
--- Vertices of a rectangle or regular polygon about its own centre, before rotation.
-local function localVertices(d)
-  if d.kind == 'rect' then
-    local hx, hy = d.w / 2, d.h / 2
-    return { -hx, -hy, hx, -hy, hx, hy, -hx, hy }
-  end
-  local v = {}
-  for i = 1, d.n do
-    local a = -2 * math.pi * i / d.n
-    v[#v + 1], v[#v + 2] = d.r * math.sin(a), d.r * math.cos(a)
-  end
-  return v
-end
-
 -- A body: a shape definition and the transform of the entity that carries it.
 local function build(d)
   local k = d.kind
   if k == 'rect' then
     return { shape = slick.newRectangleShape(-d.w / 2, -d.h / 2, d.w, d.h), x = d.x, y = d.y, angle = d.angle }
   elseif k == 'ngon' then
-    return { shape = slick.newPolygonShape(localVertices(d)), x = d.x, y = d.y, angle = d.angle }
+    return { shape = slick.newPolygonShape(W.vertices(d)), x = d.x, y = d.y, angle = d.angle }
   elseif k == 'circle' then
     return { shape = slick.newCircleShape(0, 0, d.r), x = d.x, y = d.y, angle = 0 }
   elseif k == 'edge' then
@@ -76,11 +63,7 @@ local function build(d)
       if p.kind == 'circle' then
         parts[i] = slick.newCircleShape(p.x, p.y, p.r)
       else
-        local v, c, s = localVertices(p), math.cos(p.angle), math.sin(p.angle)
-        for j = 1, #v, 2 do
-          v[j], v[j + 1] = p.x + c * v[j] - s * v[j + 1], p.y + s * v[j] + c * v[j + 1]
-        end
-        parts[i] = slick.newPolygonShape(v)
+        parts[i] = slick.newPolygonShape(W.vertices(p, true))
       end
     end
     return { shape = slick.newShapeGroup(unpack(parts)), x = 0, y = 0, angle = 0 }
