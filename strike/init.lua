@@ -12,11 +12,13 @@ local ROOT = (...):gsub('%.init$', '')
 
 local registry = require(ROOT .. '.registry')
 local MTV = require(ROOT .. '.collide.MTV')
-local dispatch = require(ROOT .. '.collide.dispatch')
+local pair = require(ROOT .. '.collide.kinds').pair
+local compound = require(ROOT .. '.collide.compound')
+local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
 
 local describe, fail = check.describe, check.fail
-local min, max = math.min, math.max
+local root, stamp = Shape.getRoot, compound.stamp
 
 ---@class strike
 local S = {
@@ -38,132 +40,79 @@ for _, name in ipairs({ 'Capsule', 'Concave', 'Chain' }) do
   S.trikers[name] = require(ROOT .. '.colliders.' .. name)
 end
 
+-- Argument checks. A shape is a table with a pose stamp and a registered kind; a collider
+-- has a leaf cache (see colliders/Collider.lua); both tests read fields the hot paths read
+-- anyway. Everything else gets an error naming the argument.
+local function isShape(v) return v._pose ~= nil and pair[v.kind] ~= nil end
+local function isCollider(v) return v._single ~= nil and v.type == 'collider' end
+
 local function badShape(fname, i, v)
-  if type(v) == 'table' and v.type == 'collider' then
-    fail(('%s: argument %d must be a shape, got a collider (use S.triking for colliders)'):format(fname, i))
+  if type(v) == 'table' then
+    if v.type == 'collider' then
+      fail(('%s: argument %d must be a shape, got a collider (use S.triking for colliders)'):format(fname, i))
+    end
+    local mt = getmetatable(v)
+    if v._pose ~= nil and type(mt) == 'table' and mt.type == 'shape' then
+      Shape.checkClass(mt, ('%s: argument %d (a %s)'):format(fname, i, tostring(v.name)))
+    end
   end
   fail(('%s: argument %d must be a strike shape, got %s'):format(fname, i, describe(v)))
 end
 
-local function checkOut(fname, out, i)
-  if out ~= nil and type(out) ~= 'table' then
-    fail(('%s: argument %d (out) must be a table such as S.MTV(), got %s'):format(fname, i, describe(out)))
-  end
+local function badBody(fname, i, v)
+  if type(v) == 'table' and v.type == 'shape' then badShape(fname, i, v) end
+  fail(('%s: argument %d must be a strike collider or shape, got %s'):format(fname, i, describe(v)))
 end
 
-local root = require(ROOT .. '.collide.sat').root
+local function badOut(fname, out, i)
+  local what = describe(out)
+  if type(out) == 'table' then what = ('a %s'):format(tostring(out.type)) end
+  fail(('%s: argument %d (out) must be a table such as S.MTV(), got %s'):format(fname, i, what))
+end
+
+-- An `out` argument: nil, or a table that is not a shape or a collider.
+local function checkOut(fname, out, i)
+  if out ~= nil and (type(out) ~= 'table' or (out.type ~= nil and out.type ~= 'mtv')) then badOut(fname, out, i) end
+end
 
 --- Separating-axis test between two convex shapes. Always returns an MTV (filled into
 --- `out` when given); check `mtv.separating`. The vector points from shape1 toward shape2.
----@param shape1 strike.Shape @param shape2 strike.Shape @param out strike.MTV|nil
+---@param shape1 strike.Shape
+---@param shape2 strike.Shape
+---@param out strike.MTV|nil
 ---@return strike.MTV
 function S.AT(shape1, shape2, out)
-  local row = type(shape1) == 'table' and dispatch[shape1.kind]
-  local test = row and type(shape2) == 'table' and row[shape2.kind]
-  if not test then
-    if not row then badShape('strike.AT', 1, shape1) end
-    badShape('strike.AT', 2, shape2)
+  if type(shape1) ~= 'table' or not isShape(shape1) then badShape('strike.AT', 1, shape1) end
+  if type(shape2) ~= 'table' or not isShape(shape2) then badShape('strike.AT', 2, shape2) end
+  local ops = pair[shape1.kind][shape2.kind]
+  if not ops then
+    fail(('strike.AT: no narrow phase for kinds %s and %s'):format(shape1.kind, shape2.kind))
   end
-  if out == nil then out = MTV() elseif type(out) ~= 'table' then checkOut('strike.AT', out, 3) end
-  test(shape1, shape2, out)
-  out.collider, out.collided = root(shape1), root(shape2)
-  return out
-end
-
--- Scratch state for S.triking: two MTVs swapped as the best one changes, and one-slot
--- leaf lists for bare shapes.
-local tmpA, tmpB = MTV(), MTV()
-local single1, single2 = {}, {}
-
-local function leavesOf(v, slot, fname, i)
-  if type(v) == 'table' then
-    if v.type == 'collider' then
-      if not v._leavesOK then v._refreshLeaves(v) end
-      return v._leaves, v._nleaves
-    elseif dispatch[v.kind] then
-      slot[1] = v
-      return slot, 1
-    end
-  end
-  fail(('%s: argument %d must be a strike collider or shape, got %s'):format(fname, i, describe(v)))
+  if out == nil then out = MTV() else checkOut('strike.AT', out, 3) end
+  ops.collide(shape1, shape2, out)
+  return stamp(out, root(shape1), root(shape2))
 end
 
 --- Collision between two colliders (or shapes): the deepest MTV over all pairs of their
 --- leaf shapes, or false when no pair collides. Members of one collider never collide
 --- with each other (nor with the members of colliders nested in it). The vector points
 --- from collider1 toward collider2.
----@param collider1 strike.Collider|strike.Shape @param collider2 strike.Collider|strike.Shape
+---@param collider1 strike.Collider|strike.Shape
+---@param collider2 strike.Collider|strike.Shape
 ---@param out strike.MTV|nil filled and returned on a collision; its contents are unspecified after false
 ---@return strike.MTV|false
 function S.triking(collider1, collider2, out)
-  -- One leaf each, the common case: straight-line code (LuaJIT traces one-trip loops
-  -- badly), tested into the caller's `out` when there is one. `_single` is a collider's
-  -- only leaf while its leaf list is current; a bare shape is its own.
-  local s1 = type(collider1) == 'table' and collider1._single
-  if s1 == nil and dispatch[collider1.kind] then s1 = collider1 end
-  local s2 = false
-  if s1 then
-    s2 = type(collider2) == 'table' and collider2._single
-    if s2 == nil and dispatch[collider2.kind] then s2 = collider2 end
+  if type(collider1) ~= 'table' or not (isCollider(collider1) or isShape(collider1)) then
+    badBody('strike.triking', 1, collider1)
   end
-  local l1, n1, l2, n2
-  if not s2 then
-    l1, n1 = leavesOf(collider1, single1, 'strike.triking', 1)
-    l2, n2 = leavesOf(collider2, single2, 'strike.triking', 2)
+  if type(collider2) ~= 'table' or not (isCollider(collider2) or isShape(collider2)) then
+    badBody('strike.triking', 2, collider2)
   end
-  if out ~= nil and type(out) ~= 'table' then checkOut('strike.triking', out, 3) end
-  local r1, r2 = collider1, collider2
-  while r1.parent do r1 = r1.parent end
-  while r2.parent do r2 = r2.parent end
-  if r1 == r2 then -- every leaf pair would share a root
-    single1[1], single2[1] = nil, nil
-    return false
-  end
-  if s2 then
-    if s1._dirty then s1:_refresh() end
-    if s2._dirty then s2:_refresh() end
-    -- (a shape's bounds are its entries 1 to 4: minx, miny, maxx, maxy)
-    if s1[3] < s2[1] or s2[3] < s1[1] or s1[4] < s2[2] or s2[4] < s1[2] then
-      return false -- the bounds do not even meet
-    end
-    local m = dispatch[s1.kind][s2.kind](s1, s2, out or tmpA)
-    if not (m.depth > 0) then return false end -- luacheck: ignore 581 (NaN reads as no collision)
-    if not out then out = MTV.set(MTV(), m) end
-    out.collider, out.collided = r1, r2
-    return out
-  end
-  -- Test into `tmp`; a deeper result becomes `best` and the other buffer becomes `tmp`.
-  -- With an `out` table it is one of the two buffers, so the usual single hit needs no copy.
-  local best, tmp, found = tmpA, out or tmpB, false
-  local bestDepth = 0
-  for i = 1, n1 do
-    local a = l1[i]
-    if a._dirty then a:_refresh() end
-    local ax0, ay0, ax1, ay1 = a[1], a[2], a[3], a[4] -- (its bounds)
-    local row = dispatch[a.kind]
-    for j = 1, n2 do
-      local b = l2[j]
-      if b._dirty then b:_refresh() end
-      -- Bounds meet (closed intervals: an axis-aligned edge or a point has a flat box;
-      -- the narrow phase decides touching), as two tests instead of four: fewer trace
-      -- exits under LuaJIT.
-      if min(ax1, b[3]) >= max(ax0, b[1]) and min(ay1, b[4]) >= max(ay0, b[2]) then
-        row[b.kind](a, b, tmp)
-        local d = tmp.depth
-        if d > bestDepth then -- (false for NaN and for separating results)
-          best, tmp, found, bestDepth = tmp, best, true, d
-        end
-      end
-    end
-  end
-  single1[1], single2[1] = nil, nil -- (bare shapes are not kept alive by strike)
-  if not found then return false end
-  if best ~= out then out = MTV.set(out or MTV(), best) end
-  out.collider, out.collided = r1, r2
-  return out
+  if out ~= nil then checkOut('strike.triking', out, 3) end
+  return compound.collide(collider1, collider2, out)
 end
 
-local contact = require(ROOT .. '.collide.contact')
+local scratch = MTV() -- S.ite's re-test of shapes that moved
 
 local function checkMTV(fname, mtv)
   if type(mtv) ~= 'table' or type(mtv.x) ~= 'number' or type(mtv.y) ~= 'number' then
@@ -174,23 +123,35 @@ end
 --- Contact points of a collision (see "Contacts" in the README): a list of 1 or 2 points
 --- `{x =, y =, depth =, id =}` with `count` and the normal `nx, ny` (the MTV's direction),
 --- or nil for a separating MTV. Each point lies midway between the two surfaces; `id`
---- names the features that touch and stays the same while they do. With `out`, its
---- tables are reused and nothing is allocated once it has held two points.
----@param mtv strike.MTV @param out table|nil
+--- names the features that touch and stays the same while they do. The points describe
+--- the shapes as they are when S.ite is called: when either shape has moved since the MTV
+--- was computed, the pair is tested again (nil when it no longer collides; the MTV itself
+--- is left as it is). With `out`, its tables are reused and nothing is allocated once it
+--- has held two points.
+---@param mtv strike.MTV
+---@param out table|nil
 ---@return table|nil contacts
 function S.ite(mtv, out)
   checkMTV('strike.ite', mtv)
-  if out ~= nil and type(out) ~= 'table' then checkOut('strike.ite', out, 2) end
+  if out ~= nil and type(out) ~= 'table' then badOut('strike.ite', out, 2) end
   if mtv.separating then return nil end
   local a, b = mtv.colliderShape, mtv.collidedShape
-  if type(a) ~= 'table' or not dispatch[a.kind] or type(b) ~= 'table' or not dispatch[b.kind] then
+  if type(a) ~= 'table' or not isShape(a) or type(b) ~= 'table' or not isShape(b) then
     fail('strike.ite: the MTV must come from S.AT or S.triking (its colliderShape and collidedShape are not shapes)')
   end
+  local ops = pair[a.kind][b.kind]
+  local m = mtv
+  if a._pose ~= mtv._poseA or b._pose ~= mtv._poseB then
+    m = ops.collide(a, b, scratch)
+  end
+  if not (m.depth > 0) then return nil end -- luacheck: ignore 581 (NaN reads as no collision)
+  if a._dirty then a:_refresh() end
+  if b._dirty then b:_refresh() end
   out = out or {}
-  local k = contact.manifold(mtv, out)
+  local k = ops.contact(a, b, m.nx, m.ny, m.depth, m.edgeIndex, out)
   if k == 0 then return nil end
   if k == 1 and out[2] then out._spare, out[2] = out[2], nil end
-  out.count, out.nx, out.ny = k, mtv.nx, mtv.ny
+  out.count, out.nx, out.ny = k, m.nx, m.ny
   return out
 end
 
@@ -215,14 +176,13 @@ function S.hove(mtv)
 end
 
 local function checkBody(fname, v, i)
-  if type(v) ~= 'table' or (v.type ~= 'collider' and not dispatch[v.kind]) then
-    fail(('%s: argument %d must be a strike collider or shape, got %s'):format(fname, i, describe(v)))
-  end
+  if type(v) ~= 'table' or not (isCollider(v) or isShape(v)) then badBody(fname, i, v) end
 end
 
 --- Bounding-circle test (centroid and radius) for colliders or shapes: true when the
 --- circles overlap (touching is not overlapping).
----@param a strike.Collider|strike.Shape @param b strike.Collider|strike.Shape
+---@param a strike.Collider|strike.Shape
+---@param b strike.Collider|strike.Shape
 ---@return boolean
 function S.ircle(a, b)
   checkBody('strike.ircle', a, 1)
@@ -236,7 +196,8 @@ end
 
 --- Bounding-box test for colliders or shapes: true when the boxes overlap (touching is
 --- not overlapping).
----@param a strike.Collider|strike.Shape @param b strike.Collider|strike.Shape
+---@param a strike.Collider|strike.Shape
+---@param b strike.Collider|strike.Shape
 ---@return boolean
 function S.aabb(a, b)
   checkBody('strike.aabb', a, 1)

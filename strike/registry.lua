@@ -49,6 +49,7 @@ function registry.new()
         check.fail(('strike: shapes/%s.lua must return a class extending a strike shape, got %s')
           :format(name, check.describe(cls)))
       end
+      Shape.checkClass(cls, ('strike: the class in shapes/%s.lua'):format(name))
       nameClass(cls, name)
       rawset(t, name, cls)
       return cls
@@ -61,6 +62,7 @@ function registry.new()
         check.fail(('strike: S.hapes.%s must be a class extending a strike shape (e.g. '
           .. 'S.hapes.ConvexPolygon:extend()), got %s'):format(name, check.describe(cls)))
       end
+      Shape.checkClass(cls, ('strike: S.hapes.%s'):format(name))
       nameClass(cls, name)
       missingShape[name], missingCollider[name] = nil, nil
       rawset(t, name, cls)

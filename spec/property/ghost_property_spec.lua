@@ -107,7 +107,7 @@ end
 -- The plain two-sided edge test, the segment being an ordinary two-vertex polygon.
 local function plain(a, b)
   local out = S.MTV()
-  if a.kind == 'circle' then return sat.circlePolygon(a, b, out) end
+  if a.kind == 'circle' then return sat.polygonCircle(b, a, out, true) end
   if b.kind == 'circle' then return sat.polygonCircle(a, b, out) end
   return sat.polygonPolygon(a, b, out)
 end

@@ -16,9 +16,9 @@
 --- Corners: the corner at p1 is convex when the chain turns there so that the free side
 --- gets wider: cross(p1 - prev, p2 - p1) > 0 (a left turn with y up); likewise at p2. An
 --- open end counts as convex, like the end of a lone edge. The narrow phase
---- (strike/collide/chain.lua) reads these fields, refreshed with the world vertices:
----   self[7], self[8]    n, the segment's own normal (from VertexShape: p1 = self[5],
----                       self[6], p2 = self[10], self[11])
+--- (strike/collide/chain.lua) reads these, refreshed with the world vertices:
+---   vertex 1 and 2      p1 and p2, and face 1's normal n, the segment's own (VertexShape's
+---                       records, see strike/base/layout.lua)
 ---   _g1x, _g1y          at p1: the previous segment's unit normal, or at an open start
 ---                       the outward tangent -(p2 - p1) / len
 ---   _g2x, _g2y          at p2: the next segment's unit normal, or at an open end the
@@ -29,7 +29,10 @@
 local ROOT = (...):match('^(.-)%.base%.[^%.]+$')
 local Edge = require(ROOT .. '.shapes.Edge')
 local check = require(ROOT .. '.check')
+local layout = require(ROOT .. '.base.layout')
+local rotate = require(ROOT .. '.vec').rotate
 
+local X, Y = layout.X, layout.Y
 local sqrt = math.sqrt
 local number, fail, describe = check.number, check.fail, check.describe
 
@@ -73,7 +76,7 @@ function ChainSegment:new(x1, y1, x2, y2, x0, y0, x3, y3)
     fail(FNAME .. ': coordinates too large')
   end
   Edge.new(self, x1, y1, x2, y2)
-  local cx, cy = self._x, self._y
+  local cx, cy = self:getCentroid()
   local ex, ey = x2 - x1, y2 - y1
   local l = sqrt(ex * ex + ey * ey)
   ex, ey = ex / l, ey / l
@@ -108,19 +111,17 @@ function ChainSegment:_refresh()
   Edge._refresh(self)
   local c, s, k = self._cos, self._sin, self._scale
   local sc, ss = c * k, s * k
-  local x0, y0 = self._x, self._y
+  local x0, y0 = self[X], self[Y]
   if self._hasPrev then
-    local x, y = self._lprevx, self._lprevy
-    self._wprevx, self._wprevy = x0 + sc * x - ss * y, y0 + ss * x + sc * y
+    local x, y = rotate(self._lprevx, self._lprevy, sc, ss)
+    self._wprevx, self._wprevy = x0 + x, y0 + y
   end
   if self._hasNext then
-    local x, y = self._lnextx, self._lnexty
-    self._wnextx, self._wnexty = x0 + sc * x - ss * y, y0 + ss * x + sc * y
+    local x, y = rotate(self._lnextx, self._lnexty, sc, ss)
+    self._wnextx, self._wnexty = x0 + x, y0 + y
   end
-  local x, y = self._lg1x, self._lg1y
-  self._g1x, self._g1y = c * x - s * y, s * x + c * y
-  x, y = self._lg2x, self._lg2y
-  self._g2x, self._g2y = c * x - s * y, s * x + c * y
+  self._g1x, self._g1y = rotate(self._lg1x, self._lg1y, c, s)
+  self._g2x, self._g2y = rotate(self._lg2x, self._lg2y, c, s)
 end
 
 --- The ghost vertices in world coordinates: the chain's point before p1 and the one after

@@ -2,13 +2,23 @@
 --- scale) and the transforms. Subclasses keep their geometry in local coordinates
 --- (relative to the centroid, unrotated, unscaled) and cache world-space data, refreshed
 --- lazily: a transform only marks the shape dirty. The world-space data is the shape's own
---- array part (bounds in self[1] to self[4], then whatever the subclass keeps), so that
---- the narrow phase reads one table per shape; a shape's integer keys are strike's.
+--- array part, laid out as strike/base/layout.lua says (bounds, position, radius, then
+--- whatever the kind keeps), so that the narrow phase reads one table per shape.
+---
+--- What a shape class must provide is declared once, in Shape.INTERFACE below, and checked
+--- when the class is registered (S.hapes.X = cls, or a file in shapes/) or first used (added
+--- to a collider, or tested).
 local ROOT = (...):match('^(.-)%.base%.[^%.]+$')
 local Object = require(ROOT .. '.class')
 local check = require(ROOT .. '.check')
+local layout = require(ROOT .. '.base.layout')
+local vec = require(ROOT .. '.vec')
+local kinds = require(ROOT .. '.collide.dispatch').kind
 
+local X, Y = layout.X, layout.Y
+local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
 local cos, sin, abs = math.cos, math.sin, math.abs
+local rotate = vec.rotate
 local number, positive, optPoint, finite, fail = check.number, check.positive, check.optPoint, check.finite,
   check.fail
 
@@ -19,23 +29,61 @@ local number, positive, optPoint, finite, fail = check.number, check.positive, c
 ---@field type string always 'shape'
 local Shape = Object:extend()
 Shape.type = 'shape'
-Shape.kind = 'abstract'
 Shape.name = 'Shape'
 
---- Set the pose: the centroid at (x, y), angle 0, scale 1. Called by constructors.
----@param x number @param y number
+--- What every shape class must provide (the base class provides the transforms and the
+--- getters of the pose). `kind` must name a kind registered in strike/collide/dispatch.lua.
+Shape.INTERFACE = {
+  'kind', '_refresh', '_farthest', 'project', 'containsPoint', 'getSupport', 'getVertices', 'getVertex',
+  'getVertexCount', 'getEdge', 'ipairs', 'vecs', 'unpack',
+}
+
+-- Classes found complete, so that the check runs once per class.
+local complete = setmetatable({}, { __mode = 'k' })
+
+--- Raise an error at the caller's line unless the shape class `cls` provides every member
+--- of Shape.INTERFACE and a registered kind. `what` names the class in the message.
+---@param cls table
+---@param what string
+function Shape.checkClass(cls, what)
+  if complete[cls] then return end
+  for _, name in ipairs(Shape.INTERFACE) do
+    if cls[name] == nil then
+      fail(('%s lacks `%s`, which every shape class must provide (%s); extend a strike shape such as'
+        .. ' S.hapes.ConvexPolygon or S.hapes.Circle'):format(what, name, table.concat(Shape.INTERFACE, ', ')))
+    end
+  end
+  if not kinds[cls.kind] then
+    fail(('%s has the kind %s, which no narrow phase is registered for'):format(what, check.describe(cls.kind)))
+  end
+  complete[cls] = true
+end
+
+-- A counter that stamps every pose: a shape's `_pose` changes whenever it moves, so a
+-- result computed for one pose can tell that it is stale (see S.ite).
+local poses = 0
+
+--- Set the pose: the centroid at (x, y), angle 0, scale 1, and lay out the header of the
+--- world data (see layout.lua). Called by constructors, after any vertex records exist.
+---@param x number
+---@param y number
 function Shape:_setPose(x, y)
   self.kind = self.kind -- an own copy of the class's kind: the dispatch reads it every test
-  self._x, self._y = x, y
-  self._angle, self._cos, self._sin, self._scale = 0, 1, 0, 1
-  -- A shape's array part is its world-space data, refreshed when dirty. It starts with the
-  -- bounds: minx, miny, maxx, maxy in self[1] to self[4] (polygons keep their vertex
-  -- records after them, see VertexShape).
-  if self[1] == nil then
-    for k = 1, 4 do self[k] = 0 end -- (refreshed before any use: the shape starts dirty)
+  for k = 1, layout.HEADER do
+    if self[k] == nil then self[k] = 0 end -- (refreshed before any use: the shape starts dirty)
   end
+  self[X], self[Y] = x, y
+  self._angle, self._cos, self._sin, self._scale = 0, 1, 0, 1
   self._dirty = true
+  poses = poses + 1
+  self._pose = poses
 end
+
+--- Put the centroid at (x, y) exactly, at construction (a subclass that knows its exact
+--- centre, free of the round-off of the area-weighted centroid). The shape must be dirty.
+---@param x number
+---@param y number
+function Shape:_placeCentroid(x, y) self[X], self[Y] = x, y end
 
 -- Commit a new pose if every world coordinate it implies stays finite; otherwise raise an
 -- error and leave the shape as it was.
@@ -44,14 +92,31 @@ local function setPose(self, x, y, scale, fname)
     fail(fname .. ': the result would overflow (coordinates too large)')
   end
   if scale <= 0 then fail(fname .. ': the scale would underflow to 0') end
-  self._x, self._y, self._scale = x, y, scale
+  self[X], self[Y], self._scale = x, y, scale
+end
+
+--- Set the pose to a position and scale already checked (a collider moving its leaves),
+--- turned by `turn` radians when given, and mark the shape moved.
+---@param x number
+---@param y number
+---@param scale number
+---@param turn number|nil
+function Shape:_place(x, y, scale, turn)
+  self[X], self[Y], self._scale = x, y, scale
+  if turn then
+    local angle = self._angle + turn
+    self._angle, self._cos, self._sin = angle, cos(angle), sin(angle)
+  end
+  self:_touch()
 end
 
 --- Mark this shape's world-space cache, and every enclosing collider's area, centroid,
---- bounds and radius, as stale. The walk stops at the first collider already marked (see
---- the cache protocol in colliders/Collider.lua).
+--- bounds and radius, as stale, and stamp the new pose. The walk stops at the first
+--- collider already marked (see the cache protocol in colliders/Collider.lua).
 function Shape:_touch()
   self._dirty = true
+  poses = poses + 1
+  self._pose = poses
   local p = self.parent
   while p and (p._massOK or p._clean) do
     p._massOK, p._clean = false, false
@@ -59,16 +124,13 @@ function Shape:_touch()
   end
 end
 
---- Recompute world-space data. Subclasses override it; it must clear `_dirty`.
-function Shape:_refresh() self._dirty = false end
-
 --- Move by (dx, dy).
 ---@param dx number @param dy number
 ---@return self
 function Shape:translate(dx, dy)
   number(dx, 'strike.Shape:translate', 'dx')
   number(dy, 'strike.Shape:translate', 'dy')
-  setPose(self, self._x + dx, self._y + dy, self._scale, 'strike.Shape:translate')
+  setPose(self, self[X] + dx, self[Y] + dy, self._scale, 'strike.Shape:translate')
   self:_touch()
   return self
 end
@@ -87,9 +149,8 @@ end
 -- Rotate the pose by `a` about (rx, ry) (the centroid when nil). Arguments are valid.
 local function rotateBy(self, a, rx, ry, fname)
   if rx then
-    local c, s = cos(a), sin(a)
-    local dx, dy = self._x - rx, self._y - ry
-    setPose(self, rx + c * dx - s * dy, ry + s * dx + c * dy, self._scale, fname)
+    local dx, dy = rotate(self[X] - rx, self[Y] - ry, cos(a), sin(a))
+    setPose(self, rx + dx, ry + dy, self._scale, fname)
   end
   local angle = self._angle + a
   self._angle, self._cos, self._sin = angle, cos(angle), sin(angle)
@@ -124,7 +185,7 @@ end
 function Shape:scale(sf, refx, refy)
   positive(sf, 'strike.Shape:scale', 'factor')
   refx, refy = optPoint(refx, refy, 'strike.Shape:scale')
-  local x, y = self._x, self._y
+  local x, y = self[X], self[Y]
   if refx then x, y = refx + (x - refx) * sf, refy + (y - refy) * sf end
   setPose(self, x, y, self._scale * sf, 'strike.Shape:scale')
   self:_touch()
@@ -141,7 +202,7 @@ function Shape:getScale() return self._scale end
 
 --- The centroid (area centroid for polygons, centre for circles, midpoint for edges).
 ---@return number x, number y
-function Shape:getCentroid() return self._x, self._y end
+function Shape:getCentroid() return self[X], self[Y] end
 
 --- The area (never negative; 0 for an Edge).
 ---@return number
@@ -149,7 +210,7 @@ function Shape:getArea() return self._area * self._scale * self._scale end
 
 --- Area and centroid together.
 ---@return number area, number x, number y
-function Shape:getAreaCentroid() return self:getArea(), self._x, self._y end
+function Shape:getAreaCentroid() return self:getArea(), self[X], self[Y] end
 
 --- Radius of the smallest circle about the centroid that holds the shape.
 ---@return number
@@ -159,14 +220,14 @@ function Shape:getRadius() return self._radius * self._scale end
 ---@return number x, number y, number w, number h
 function Shape:getBbox()
   if self._dirty then self:_refresh() end
-  return self[1], self[2], self[3] - self[1], self[4] - self[2]
+  return self[MINX], self[MINY], self[MAXX] - self[MINX], self[MAXY] - self[MINY]
 end
 
 --- Axis-aligned bounds as minimum x, minimum y, maximum x, maximum y.
 ---@return number minx, number miny, number maxx, number maxy
 function Shape:getBounds()
   if self._dirty then self:_refresh() end
-  return self[1], self[2], self[3], self[4]
+  return self[MINX], self[MINY], self[MAXX], self[MAXY]
 end
 
 --- The outermost collider that holds this shape, or the shape itself when it has none.
@@ -177,27 +238,25 @@ function Shape:getRoot()
   return node
 end
 
--- Copy plain data: numbers, strings, booleans, and tables without metatables (recursively).
--- Tables with a metatable (other objects) are shared, not copied.
-local function clone(v)
-  if type(v) ~= 'table' or getmetatable(v) then return v end
-  local t = {}
-  for k, x in pairs(v) do t[k] = clone(x) end
-  return t
-end
-Shape._clone = clone
-
 --- An independent copy of the same class, in the same pose; then, if given, moved so its
 --- centroid is at (x, y) and rotated to `angle`. Works for user-defined shapes too: it
---- copies the shape's data instead of calling the constructor.
----@param x number|nil @param y number|nil @param angle number|nil
+--- copies the shape's fields instead of calling the constructor. strike's own data is
+--- duplicated; the values of your own fields (an `entity`, say) are shared by reference,
+--- not copied. The copy belongs to no collider.
+---@param x number|nil
+---@param y number|nil
+---@param angle number|nil
 ---@return strike.Shape
 function Shape:copy(x, y, angle)
   local c = setmetatable({}, getmetatable(self))
+  for k = 1, #self do c[k] = self[k] end -- (the array part first, so it stays an array)
   for k, v in pairs(self) do
-    if k ~= 'parent' then c[k] = clone(v) end
+    if c[k] == nil and k ~= 'parent' then c[k] = v end
   end
+  -- (local geometry is never changed after construction, so copies share it)
   c._dirty = true
+  poses = poses + 1
+  c._pose = poses
   if x ~= nil or y ~= nil then c:translateTo(x, y) end
   if angle ~= nil then c:rotateTo(angle) end
   return c

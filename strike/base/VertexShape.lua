@@ -4,19 +4,24 @@
 ---               the vertex relative to the centroid, unrotated and unscaled (l[k], l[k+1];
 ---               positive winding), and the unit outward normal of edge i, from vertex i to
 ---               vertex i + 1 (l[k+2], l[k+3])
----   self[...]   world-space data, refreshed when dirty, in the shape's own array part (5n + 4
----               numbers): the bounds minx, miny, maxx, maxy (self[1] to self[4], as for every
----               shape, see Shape), then one record per vertex: vertex i's starts at k = 5i and
----               holds x, y (self[k], self[k+1]), the unit normal of edge i (self[k+2],
----               self[k+3]) and the offset of edge i's line along that normal, dot(normal i,
----               vertex i) (self[k+4]). The narrow phase reads the shape's table and nothing
----               else, so that a test touches few cache lines and follows no pointers.
+---   self[...]   world-space data, refreshed when dirty, in the shape's own array part: the
+---               header every shape has, then one record per vertex (vertex, edge normal, edge
+---               offset), laid out as strike/base/layout.lua says. The narrow phase reads the
+---               shape's table and nothing else, so that a test touches few cache lines and
+---               follows no pointers.
 ---   _half       n / 2 when the polygon is centrally symmetric (normal i + n/2 is exactly
 ---               -normal i: rectangles, even regular polygons, edges), else 0; the narrow
 ---               phase then gets two faces' separations from one projection of the other shape.
 local ROOT = (...):match('^(.-)%.base%.[^%.]+$')
 local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
+local layout = require(ROOT .. '.base.layout')
+local rotate = require(ROOT .. '.vec').rotate
+
+local MINX, MINY, MAXX, MAXY, R = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY, layout.R
+local X, Y = layout.X, layout.Y
+local STRIDE, FIRST, VY, NX, NY, D = layout.STRIDE, layout.FIRST, layout.VY, layout.NX, layout.NY, layout.D
+local base, last = layout.base, layout.last
 
 local sqrt, huge, abs, floor = math.sqrt, math.huge, math.abs, math.floor
 local number = check.number
@@ -61,8 +66,9 @@ function VertexShape:_setVertices(xs, ys, n, cx, cy, area)
   end
   self._n, self._l = n, l
   self._half = symmetricHalf(l, n)
-  for k = 1, 5 * n + 4 do self[k] = 0 end
-  for k = #self, 5 * n + 5, -1 do self[k] = nil end
+  local size = layout.size(n)
+  for k = 1, size do self[k] = 0 end
+  for k = #self, size + 1, -1 do self[k] = nil end
   self._area, self._radius = area, sqrt(r2)
   self:_setPose(cx, cy)
 end
@@ -70,24 +76,24 @@ end
 function VertexShape:_refresh()
   local n = self._n
   local c, s, k = self._cos, self._sin, self._scale
-  local x0, y0 = self._x, self._y
+  local x0, y0 = self[X], self[Y]
   local l = self._l
   local minx, miny, maxx, maxy = huge, huge, -huge, -huge
   local sc, ss = c * k, s * k
   for i = 1, n do
     local q = 4 * i - 3
-    local x, y = l[q], l[q + 1]
-    local px, py = x0 + sc * x - ss * y, y0 + ss * x + sc * y
+    local px, py = rotate(l[q], l[q + 1], sc, ss)
+    px, py = x0 + px, y0 + py
     if px < minx then minx = px end
     if px > maxx then maxx = px end
     if py < miny then miny = py end
     if py > maxy then maxy = py end
-    x, y = l[q + 2], l[q + 3]
-    x, y = c * x - s * y, s * x + c * y
-    local r = 5 * i
-    self[r], self[r + 1], self[r + 2], self[r + 3], self[r + 4] = px, py, x, y, x * px + y * py
+    local nx, ny = rotate(l[q + 2], l[q + 3], c, s)
+    local r = base(i)
+    self[r], self[r + VY], self[r + NX], self[r + NY], self[r + D] = px, py, nx, ny, nx * px + ny * py
   end
-  self[1], self[2], self[3], self[4] = minx, miny, maxx, maxy
+  self[MINX], self[MINY], self[MAXX], self[MAXY] = minx, miny, maxx, maxy
+  self[R] = 0
   self._dirty = false
 end
 
@@ -106,8 +112,8 @@ function VertexShape:getVertexCount() return self._n end
 function VertexShape:getVertex(i)
   if not inRange(i, self._n) then return nil end
   if self._dirty then self:_refresh() end
-  local k = 5 * i
-  return self[k], self[k + 1]
+  local k = base(i)
+  return self[k], self[k + VY]
 end
 
 --- Edge i (vertex i to vertex i + 1, wrapping), as x1, y1, x2, y2; nil when out of range.
@@ -118,8 +124,8 @@ function VertexShape:getEdge(i)
   local n = self._n
   if not inRange(i, n) then return nil end
   if self._dirty then self:_refresh() end
-  local k, l = 5 * i, i < n and 5 * i + 5 or 5
-  return self[k], self[k + 1], self[l], self[l + 1]
+  local k, l = base(i), base(i < n and i + 1 or 1)
+  return self[k], self[k + VY], self[l], self[l + VY]
 end
 
 --- Unit outward normal of edge i in world space; nil when out of range.
@@ -128,8 +134,8 @@ end
 function VertexShape:getNormal(i)
   if not inRange(i, self._n) then return nil end
   if self._dirty then self:_refresh() end
-  local k = 5 * i
-  return self[k + 2], self[k + 3]
+  local k = base(i)
+  return self[k + NX], self[k + NY]
 end
 
 --- World vertices as a flat list {x1, y1, x2, y2, ...}, ready for love.graphics.polygon.
@@ -141,7 +147,8 @@ function VertexShape:getVertices(out)
   out = out or {}
   local n = self._n
   for i = 1, n do
-    out[2 * i - 1], out[2 * i] = self[5 * i], self[5 * i + 1]
+    local k = base(i)
+    out[2 * i - 1], out[2 * i] = self[k], self[k + VY]
   end
   for i = #out, 2 * n + 1, -1 do out[i] = nil end
   return out, n
@@ -155,8 +162,8 @@ function VertexShape:project(nx, ny)
   number(ny, 'strike.Shape:project', 'ny')
   if self._dirty then self:_refresh() end
   local lo, hi = huge, -huge
-  for k = 5, 5 * self._n, 5 do
-    local d = self[k] * nx + self[k + 1] * ny
+  for k = FIRST, last(self._n), STRIDE do
+    local d = self[k] * nx + self[k + VY] * ny
     if d < lo then lo = d end
     if d > hi then hi = d end
   end
@@ -170,8 +177,8 @@ function VertexShape:getSupport(nx, ny)
   if self._dirty then self:_refresh() end
   local best, bi = -huge, 1
   for i = 1, self._n do
-    local k = 5 * i
-    local d = self[k] * nx + self[k + 1] * ny
+    local k = base(i)
+    local d = self[k] * nx + self[k + VY] * ny
     if d > best then best, bi = d, i end
   end
   return bi
@@ -185,8 +192,8 @@ function VertexShape:containsPoint(x, y)
   x, y = Shape._point(x, y, 'strike.Shape:containsPoint')
   if self._dirty then self:_refresh() end
   if self._n < 3 then return false end
-  for k = 5, 5 * self._n, 5 do
-    if (x - self[k]) * self[k + 2] + (y - self[k + 1]) * self[k + 3] >= 0 then return false end
+  for k = FIRST, last(self._n), STRIDE do
+    if (x - self[k]) * self[k + NX] + (y - self[k + VY]) * self[k + NY] >= 0 then return false end
   end
   return true
 end
@@ -196,8 +203,8 @@ local function edgeIter(self, i)
   i = i + 1
   local n = self._n
   if i > n then return nil end
-  local k, l = 5 * i, i < n and 5 * i + 5 or 5
-  return i, self[k], self[k + 1], self[l], self[l + 1]
+  local k, l = base(i), base(i < n and i + 1 or 1)
+  return i, self[k], self[k + VY], self[l], self[l + VY]
 end
 
 --- Iterate over the edges: `for i, x1, y1, x2, y2 in shape:ipairs() do`.
@@ -213,8 +220,8 @@ local function vecIter(self, i)
   i = i + 1
   local n = self._n
   if i > n then return nil end
-  local k, l = 5 * i, i < n and 5 * i + 5 or 5
-  return i, self[l] - self[k], self[l + 1] - self[k + 1]
+  local k, l = base(i), base(i < n and i + 1 or 1)
+  return i, self[l] - self[k], self[l + VY] - self[k + VY]
 end
 
 --- Iterate over edge vectors: `for i, dx, dy in shape:vecs() do`. Allocates nothing.
@@ -230,8 +237,8 @@ end
 function VertexShape:_farthest(px, py)
   if self._dirty then self:_refresh() end
   local best = 0
-  for k = 5, 5 * self._n, 5 do
-    local dx, dy = self[k] - px, self[k + 1] - py
+  for k = FIRST, last(self._n), STRIDE do
+    local dx, dy = self[k] - px, self[k + VY] - py
     local d = dx * dx + dy * dy
     if d > best then best = d end
   end

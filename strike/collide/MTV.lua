@@ -25,6 +25,7 @@ local sqrt = math.sqrt
 --- did; 0: the axis came from a circle (centre to centre, or centre to a vertex)
 local MTV = Object:extend()
 MTV.name = 'MTV'
+MTV.type = 'mtv'
 
 --- A new MTV: vector (dx, dy) (default 0, 0) between two shapes.
 ---@param dx number|nil @param dy number|nil
@@ -44,6 +45,9 @@ function MTV:new(dx, dy, colliderShape, collidedShape, separating)
   self.edgeIndex = 0
   self.colliderShape, self.collidedShape = colliderShape or false, collidedShape or false
   self.collider, self.collided = colliderShape or false, collidedShape or false
+  -- The poses of the two shapes the vector was computed for (see S.ite).
+  self._poseA = type(colliderShape) == 'table' and colliderShape._pose or false
+  self._poseB = type(collidedShape) == 'table' and collidedShape._pose or false
 end
 
 --- Length of the vector.
@@ -80,10 +84,14 @@ function MTV:setSeparating(separating) self.separating = separating and true or 
 ---@param other strike.MTV
 ---@return self
 function MTV:set(other)
+  if type(other) ~= 'table' or type(other.x) ~= 'number' or type(other.y) ~= 'number' then
+    check.fail(('strike.MTV:set: argument 1 must be an MTV, got %s'):format(check.describe(other)))
+  end
   self.x, self.y, self.nx, self.ny, self.depth = other.x, other.y, other.nx, other.ny, other.depth
   self.separating, self.edgeIndex = other.separating, other.edgeIndex
   self.collider, self.collided = other.collider, other.collided
   self.colliderShape, self.collidedShape = other.colliderShape, other.collidedShape
+  self._poseA, self._poseB = other._poseA or false, other._poseB or false
   return self
 end
 

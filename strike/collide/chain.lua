@@ -30,10 +30,15 @@
 --- Chain segments never collide with each other.
 local ROOT = (...):match('^(.-)%.collide%.[^%.]+$')
 local sat = require(ROOT .. '.collide.sat')
+local layout = require(ROOT .. '.base.layout')
 
-local result, polygonPolygon, polygonCircle, circlePolygon = sat.result, sat.polygonPolygon, sat.polygonCircle,
-  sat.circlePolygon
+local result, polygonPolygon, polygonCircle = sat.result, sat.polygonPolygon, sat.polygonCircle
 local huge = math.huge
+local X, Y, R = layout.X, layout.Y, layout.R
+local STRIDE, FIRST, VY, NX, NY = layout.STRIDE, layout.FIRST, layout.VY, layout.NX, layout.NY
+local last = layout.last
+-- A segment's p1 (with face 1's normal n, the segment's own) and p2 records.
+local P1, P2 = layout.base(1), layout.base(2)
 
 local chain = {}
 
@@ -42,7 +47,7 @@ local TOL = 1e-12
 
 -- Is m (unit, from S toward the other shape) admissible for S? (S is refreshed.)
 local function admissible(S, mx, my)
-  local nx, ny = S[7], S[8]
+  local nx, ny = S[P1 + NX], S[P1 + NY]
   local c = nx * my - ny * mx -- cross(n, m) = m . e: < 0 leans toward p1, > 0 toward p2
   if c <= TOL and c >= -TOL and nx * mx + ny * my > 0 then return true end
   if c < 0 then
@@ -54,26 +59,28 @@ end
 --- admissible(segment, mx, my): true when the unit normal (mx, my), pointing from the chain
 --- segment toward the other shape, is one the segment may push along (step 3 above). The
 --- segment must be refreshed.
----@param S strike.ChainSegment @param mx number @param my number
+---@param S strike.ChainSegment
+---@param mx number
+---@param my number
 ---@return boolean
 chain.admissible = admissible
 
 -- Steps 4 and 5 for a polygon P: false when the neighbour owns the contact, else the depth
 -- of the push along n.
 local function polygonVerdict(S, P, mx, my)
-  local nx, ny, x1, y1 = S[7], S[8], S[5], S[6]
-  local last = 5 * P._n
+  local nx, ny, x1, y1 = S[P1 + NX], S[P1 + NY], S[P1], S[P1 + VY]
+  local lastP = last(P._n)
   local sepN = huge
-  for r = 5, last, 5 do
-    local s = nx * (P[r] - x1) + ny * (P[r + 1] - y1)
+  for r = FIRST, lastP, STRIDE do
+    local s = nx * (P[r] - x1) + ny * (P[r + VY] - y1)
     if s < sepN then sepN = s end
   end
   local c = nx * my - ny * mx
   if c < 0 and S._hasPrev and S._convex1 then
     local gx, gy = S._g1x, S._g1y
     local reach, sepG = huge, huge -- reach: min over P of e . (v - p1), e = (-ny, nx)
-    for k = 5, last, 5 do
-      local dx, dy = P[k] - x1, P[k + 1] - y1
+    for k = FIRST, lastP, STRIDE do
+      local dx, dy = P[k] - x1, P[k + VY] - y1
       local r, s = nx * dy - ny * dx, gx * dx + gy * dy
       if r < reach then reach = r end
       if s < sepG then sepG = s end
@@ -81,10 +88,10 @@ local function polygonVerdict(S, P, mx, my)
     if reach < 0 and sepG > sepN then return false end
   elseif c > 0 and S._hasNext and S._convex2 then
     local gx, gy = S._g2x, S._g2y
-    local x2, y2 = S[10], S[11]
+    local x2, y2 = S[P2], S[P2 + VY]
     local reach, sepG = -huge, huge -- reach: max over P of e . (v - p2)
-    for k = 5, last, 5 do
-      local dx, dy = P[k] - x2, P[k + 1] - y2
+    for k = FIRST, lastP, STRIDE do
+      local dx, dy = P[k] - x2, P[k + VY] - y2
       local r, s = nx * dy - ny * dx, gx * dx + gy * dy
       if r > reach then reach = r end
       if s < sepG then sepG = s end
@@ -96,15 +103,15 @@ end
 
 -- The same for a circle C.
 local function circleVerdict(S, C, mx, my)
-  local nx, ny, x1, y1 = S[7], S[8], S[5], S[6]
-  local cx, cy, r = C._x, C._y, C._r * C._scale
+  local nx, ny, x1, y1 = S[P1 + NX], S[P1 + NY], S[P1], S[P1 + VY]
+  local cx, cy, r = C[X], C[Y], C[R]
   local dx, dy = cx - x1, cy - y1
   local sepN = nx * dx + ny * dy - r
   local c = nx * my - ny * mx
   if c < 0 and S._hasPrev and S._convex1 then
     if nx * dy - ny * dx - r < 0 and S._g1x * dx + S._g1y * dy - r > sepN then return false end
   elseif c > 0 and S._hasNext and S._convex2 then
-    dx, dy = cx - S[10], cy - S[11]
+    dx, dy = cx - S[P2], cy - S[P2 + VY]
     if nx * dy - ny * dx + r > 0 and S._g2x * dx + S._g2y * dy - r > sepN then return false end
   end
   return -sepN
@@ -112,7 +119,7 @@ end
 
 -- Is the point (x, y) behind S's line?
 local function behind(S, x, y)
-  return S[7] * (x - S[5]) + S[8] * (y - S[6]) < 0
+  return S[P1 + NX] * (x - S[P1]) + S[P1 + NY] * (y - S[P1 + VY]) < 0
 end
 
 -- Steps 2 to 5 of the header, after the ordinary edge test filled `out` for (S, B), or
@@ -120,49 +127,44 @@ end
 local function ghostRules(S, B, out, flip, verdict)
   if out.separating then return out end
   local k = flip and -1 or 1 -- the MTV points from the first argument to the second
-  local nx, ny = k * S[7], k * S[8]
+  local nx, ny = k * S[P1 + NX], k * S[P1 + NY]
   local first, second = S, B
   if flip then first, second = B, S end
-  if behind(S, B._x, B._y) then return result(out, first, second, nx, ny, 0, k) end
+  if behind(S, B[X], B[Y]) then return result(out, first, second, nx, ny, 0, k) end
   local mx, my = k * out.nx, k * out.ny
   if admissible(S, mx, my) then return out end
   return result(out, first, second, nx, ny, verdict(S, B, mx, my) or 0, k)
 end
 
---- Chain segment S against polygon (or edge) P.
----@param S strike.ChainSegment @param P strike.VertexShape @param out table an MTV-shaped table
+--- Chain segment S against polygon (or edge) P; with `flip`, reported as P against S.
+---@param S strike.ChainSegment
+---@param P strike.VertexShape
+---@param out table an MTV-shaped table
+---@param flip boolean|nil
 ---@return table out
-function chain.chainPolygon(S, P, out)
-  return ghostRules(S, P, polygonPolygon(S, P, out), false, polygonVerdict)
+function chain.chainPolygon(S, P, out, flip)
+  local m = flip and polygonPolygon(P, S, out) or polygonPolygon(S, P, out)
+  return ghostRules(S, P, m, flip, polygonVerdict)
 end
 
---- Polygon (or edge) P against chain segment S.
----@param P strike.VertexShape @param S strike.ChainSegment @param out table an MTV-shaped table
+--- Chain segment S against circle C; with `flip`, reported as C against S.
+---@param S strike.ChainSegment
+---@param C strike.Circle
+---@param out table an MTV-shaped table
+---@param flip boolean|nil
 ---@return table out
-function chain.polygonChain(P, S, out)
-  return ghostRules(S, P, polygonPolygon(P, S, out), true, polygonVerdict)
-end
-
---- Chain segment S against circle C.
----@param S strike.ChainSegment @param C strike.Circle @param out table an MTV-shaped table
----@return table out
-function chain.chainCircle(S, C, out)
-  return ghostRules(S, C, polygonCircle(S, C, out), false, circleVerdict)
-end
-
---- Circle C against chain segment S.
----@param C strike.Circle @param S strike.ChainSegment @param out table an MTV-shaped table
----@return table out
-function chain.circleChain(C, S, out)
-  return ghostRules(S, C, circlePolygon(C, S, out), true, circleVerdict)
+function chain.chainCircle(S, C, out, flip)
+  return ghostRules(S, C, polygonCircle(S, C, out, flip), flip, circleVerdict)
 end
 
 --- Two chain segments never collide: a separating result with depth 0 along A's normal.
----@param A strike.ChainSegment @param B strike.ChainSegment @param out table an MTV-shaped table
+---@param A strike.ChainSegment
+---@param B strike.ChainSegment
+---@param out table an MTV-shaped table
 ---@return table out
 function chain.chainChain(A, B, out)
   if A._dirty then A:_refresh() end
-  return result(out, A, B, A[7], A[8], 0, 1)
+  return result(out, A, B, A[P1 + NX], A[P1 + NY], 0, 1)
 end
 
 return chain

@@ -2,11 +2,18 @@
 ---
 --- Polygons (and edges) use reference-face clipping (Catto, "Contact Manifolds", GDC 2007;
 --- the same scheme as Box2D's b2ClipPolygons and dyn4j's clipping solver): the reference
---- face is the face, of either shape, most closely aligned with the contact normal (the
---- first shape's wins unless the second's is better by 1e-6 in cosine, so that resting
---- contacts do not flip between frames); the incident face is the other shape's face most
+--- face is the one the separating-axis test found, the MTV's edgeIndex (face i of the first
+--- shape for i > 0, face -i of the second for i < 0; the test's hysteresis keeps it from
+--- flipping between frames, see sat.lua); the incident face is the other shape's face most
 --- opposed to it; the incident face is clipped to the reference face's side planes and
---- the points behind the reference face are kept. Circles give one point.
+--- the points behind the reference face are kept. Only an MTV that names no face (one made
+--- by hand) has its reference face looked up: the face of either shape most aligned with
+--- the normal, the first shape's unless the second's is better by 1e-6 in cosine. Circles
+--- give one point.
+---
+--- The kernels are registered per pair of kinds in dispatch.lua, as
+--- contact(A, B, nx, ny, depth, edge, out) -> count, with (nx, ny) the unit normal from A
+--- toward B and `edge` the MTV's edgeIndex for (A, B).
 ---
 --- Every point lies midway between the two surfaces: half its depth in front of the
 --- incident feature, half behind the reference one. Its id names the features that made
@@ -16,9 +23,15 @@
 --- for an incident vertex kept as it is, 2 or 3 for a point cut by the reference face's
 --- first or second side plane. A circle's point has id = 2 * face (centre over that face of
 --- the polygon) or 2 * vertex + 1 (over that vertex), and 0 for two circles.
+local ROOT = (...):match('^(.-)%.collide%.[^%.]+$')
+local layout = require(ROOT .. '.base.layout')
+
 local contact = {}
 
 local sqrt, huge = math.sqrt, math.huge
+local X, Y, R = layout.X, layout.Y, layout.R
+local VY, NX, NY = layout.VY, layout.NX, layout.NY
+local base = layout.base
 
 -- Write point k of `out`, reusing its table (a second point's table is kept in
 -- out._spare while the manifold has one point, so that #out is always the count).
@@ -33,8 +46,8 @@ end
 local function alignedFace(P, nx, ny)
   local best, bi = -huge, 1
   for i = 1, P._n do
-    local k = 5 * i
-    local d = P[k + 2] * nx + P[k + 3] * ny
+    local k = base(i)
+    local d = P[k + NX] * nx + P[k + NY] * ny
     if d > best then best, bi = d, i end
   end
   return bi, best
@@ -54,19 +67,17 @@ local function clip(ax, ay, bx, by, ca, cb, da, db, tag)
   return ax, ay, bx, by, ca, cb
 end
 
--- Clip and keep, with R the reference polygon (face r) and I the incident one (face f).
+-- Clip and keep, with Ref the reference polygon (face r) and I the incident one (face f).
 -- Returns the number of points written. `side` is 0 or 1 (see the header).
-local function clipFaces(out, R, r, I, f, side)
-  local rk = 5 * r
-  local rl = r < R._n and rk + 5 or 5
-  local v1x, v1y, v2x, v2y = R[rk], R[rk + 1], R[rl], R[rl + 1]
-  local nx, ny = R[rk + 2], R[rk + 3]
+local function clipFaces(out, Ref, r, I, f, side)
+  local rk, rl = base(r), base(r < Ref._n and r + 1 or 1)
+  local v1x, v1y, v2x, v2y = Ref[rk], Ref[rk + VY], Ref[rl], Ref[rl + VY]
+  local nx, ny = Ref[rk + NX], Ref[rk + NY]
   local tx, ty = v2x - v1x, v2y - v1y
   local len = sqrt(tx * tx + ty * ty)
   tx, ty = tx / len, ty / len
-  local ik = 5 * f
-  local il = f < I._n and ik + 5 or 5
-  local ax, ay, bx, by = I[ik], I[ik + 1], I[il], I[il + 1]
+  local ik, il = base(f), base(f < I._n and f + 1 or 1)
+  local ax, ay, bx, by = I[ik], I[ik + VY], I[il], I[il + VY]
   local ca, cb = 0, 1 -- which corner each end is (see the header)
   -- side plane 1: dot(t, p - v1) >= 0
   local lo = tx * v1x + ty * v1y
@@ -78,17 +89,17 @@ local function clipFaces(out, R, r, I, f, side)
   if not ax then return 0 end
   -- keep what is behind the reference face
   local off = nx * v1x + ny * v1y
-  local base = ((side * 65536 + r) * 65536 + f) * 4
+  local idBase = ((side * 65536 + r) * 65536 + f) * 4
   local k = 0
   local sa = nx * ax + ny * ay - off
   if sa < 0 then
     k = k + 1
-    setPoint(out, k, ax - nx * sa / 2, ay - ny * sa / 2, -sa, base + ca)
+    setPoint(out, k, ax - nx * sa / 2, ay - ny * sa / 2, -sa, idBase + ca)
   end
   local sb = nx * bx + ny * by - off
   if sb < 0 then
     k = k + 1
-    setPoint(out, k, bx - nx * sb / 2, by - ny * sb / 2, -sb, base + cb)
+    setPoint(out, k, bx - nx * sb / 2, by - ny * sb / 2, -sb, idBase + cb)
   end
   return k
 end
@@ -98,56 +109,94 @@ local function circleFeature(P, cx, cy)
   local n = P._n
   local best, bi = -huge, 1
   for i = 1, n do
-    local k = 5 * i
-    local s = P[k + 2] * (cx - P[k]) + P[k + 3] * (cy - P[k + 1])
+    local k = base(i)
+    local s = P[k + NX] * (cx - P[k]) + P[k + NY] * (cy - P[k + VY])
     if s > best then best, bi = s, i end
   end
   local j = bi < n and bi + 1 or 1
-  local x1, y1, x2, y2 = P[5 * bi], P[5 * bi + 1], P[5 * j], P[5 * j + 1]
+  local k, l = base(bi), base(j)
+  local x1, y1, x2, y2 = P[k], P[k + VY], P[l], P[l + VY]
   if (cx - x1) * (x2 - x1) + (cy - y1) * (y2 - y1) <= 0 then return 2 * bi + 1 end
   if (cx - x2) * (x1 - x2) + (cy - y2) * (y1 - y2) <= 0 then return 2 * j + 1 end
   return 2 * bi
 end
 
---- Fill `out` with the contact points of a colliding MTV (see the header), and return
---- the count (0 for a separating MTV).
----@param mtv strike.MTV @param out table
----@return integer
-function contact.manifold(mtv, out)
-  if mtv.separating or not (mtv.depth > 0) then return 0 end -- luacheck: ignore 581
-  local A, B = mtv.colliderShape, mtv.collidedShape
-  local nx, ny, depth = mtv.nx, mtv.ny, mtv.depth
-  if A._dirty then A:_refresh() end
-  if B._dirty then B:_refresh() end
-  if A.kind == 'circle' then
-    local r = A._r * A._scale
-    local id = B.kind == 'circle' and 0 or circleFeature(B, A._x, A._y)
-    setPoint(out, 1, A._x + nx * (r - depth / 2), A._y + ny * (r - depth / 2), depth, id)
-    return 1
-  elseif B.kind == 'circle' then
-    local r = B._r * B._scale
-    setPoint(out, 1, B._x - nx * (r - depth / 2), B._y - ny * (r - depth / 2), depth, circleFeature(A, B._x, B._y))
-    return 1
-  end
-  local fa, alignA = alignedFace(A, nx, ny)
-  local fb, alignB = alignedFace(B, -nx, -ny)
+--- Polygon (or edge, or chain segment) A against polygon B: reference-face clipping.
+---@param A strike.VertexShape
+---@param B strike.VertexShape
+---@param nx number
+---@param ny number
+---@param depth number
+---@param edge integer
+---@param out table
+---@return integer count
+function contact.polygons(A, B, nx, ny, depth, edge, out)
   local k
-  if alignB > alignA + 1e-6 then
-    k = clipFaces(out, B, fb, A, (alignedFace(A, -B[5 * fb + 2], -B[5 * fb + 3])), 1)
-  else
-    k = clipFaces(out, A, fa, B, (alignedFace(B, -A[5 * fa + 2], -A[5 * fa + 3])), 0)
+  if edge > 0 then
+    local k0 = base(edge)
+    k = clipFaces(out, A, edge, B, (alignedFace(B, -A[k0 + NX], -A[k0 + NY])), 0)
+  elseif edge < 0 then
+    local k0 = base(-edge)
+    k = clipFaces(out, B, -edge, A, (alignedFace(A, -B[k0 + NX], -B[k0 + NY])), 1)
+  else -- (an MTV made by hand: look the reference face up)
+    local fa, alignA = alignedFace(A, nx, ny)
+    local fb, alignB = alignedFace(B, -nx, -ny)
+    if alignB > alignA + 1e-6 then
+      local k0 = base(fb)
+      k = clipFaces(out, B, fb, A, (alignedFace(A, -B[k0 + NX], -B[k0 + NY])), 1)
+    else
+      local k0 = base(fa)
+      k = clipFaces(out, A, fa, B, (alignedFace(B, -A[k0 + NX], -A[k0 + NY])), 0)
+    end
   end
   if k == 0 then
     -- Round-off left nothing behind the face: report the deepest vertex of B.
     local best, bj = huge, 1
     for j = 1, B._n do
-      local p = nx * B[5 * j] + ny * B[5 * j + 1]
+      local q = base(j)
+      local p = nx * B[q] + ny * B[q + VY]
       if p < best then best, bj = p, j end
     end
-    setPoint(out, 1, B[5 * bj] + nx * depth / 2, B[5 * bj + 1] + ny * depth / 2, depth, bj)
+    local q = base(bj)
+    setPoint(out, 1, B[q] + nx * depth / 2, B[q + VY] + ny * depth / 2, depth, bj)
     k = 1
   end
   return k
 end
+
+--- Polygon (or edge, or chain segment) P against circle C: one point, midway between the
+--- circle and the polygon's surface along the normal.
+---@param P strike.VertexShape
+---@param C strike.Circle
+---@param nx number
+---@param ny number
+---@param depth number
+---@param edge integer
+---@param out table
+---@return integer count
+function contact.polygonCircle(P, C, nx, ny, depth, edge, out) -- luacheck: ignore 212 (edge)
+  local r = C[R]
+  setPoint(out, 1, C[X] - nx * (r - depth / 2), C[Y] - ny * (r - depth / 2), depth, circleFeature(P, C[X], C[Y]))
+  return 1
+end
+
+--- Circle A against circle B: one point, midway between them on the centre line.
+---@param A strike.Circle
+---@param B strike.Circle
+---@param nx number
+---@param ny number
+---@param depth number
+---@param edge integer
+---@param out table
+---@return integer count
+function contact.circles(A, B, nx, ny, depth, edge, out) -- luacheck: ignore 212 (B, edge)
+  local r = A[R]
+  setPoint(out, 1, A[X] + nx * (r - depth / 2), A[Y] + ny * (r - depth / 2), depth, 0)
+  return 1
+end
+
+--- No contact (for pairs of kinds that never collide).
+---@return integer count always 0
+function contact.none() return 0 end
 
 return contact

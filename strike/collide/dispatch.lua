@@ -1,13 +1,84 @@
---- The one shape-pair dispatch table: dispatch[a.kind][b.kind](a, b, out) fills `out`
---- (an MTV-shaped table) for the pair and returns it. Kinds: 'polygon' (convex polygons
---- and edges), 'circle' and 'chain' (one-sided chain segments with ghost vertices, see
---- collide/chain.lua; two chain segments never collide).
-local ROOT = (...):match('^(.-)%.collide%.[^%.]+$')
-local sat = require(ROOT .. '.collide.sat')
-local chain = require(ROOT .. '.collide.chain')
+--- The operation tables: what strike can do with one shape of a kind, and with a pair of
+--- kinds. A shape's `kind` names its row ('polygon', 'circle', 'chain', or a kind a game
+--- registers). Built-in kinds are registered in strike/collide/kinds.lua; a new kind needs
+--- its own file of kernels and one registration (dispatch.registerKind, then
+--- dispatch.register for each pair it supports).
+---
+--- Per kind, dispatch.kind[k]:
+---   ray(s, ox, oy, ux, uy) -> lo, hi, nxLo, nyLo, nxHi, nyHi   (or nil: a miss)
+---       the interval [lo, hi] of the line o + t u (u a unit vector) inside the shape (lo
+---       may be negative, hi >= 0) and the outward unit normals at its two ends.
+---
+--- Per ordered pair of kinds, dispatch.pair[ka][kb] (one table per pair):
+---   collide(a, b, out) -> out
+---       the narrow phase: fills the MTV-shaped `out` for (a, b) (see collide/sat.lua).
+---   contact(a, b, nx, ny, depth, edge, out) -> count
+---       the contact points of a colliding pair (see collide/contact.lua), from the MTV's
+---       normal (from a toward b), depth and edgeIndex.
+---   distance, toi   slots for the distance and time-of-impact queries; false until a
+---       kernel is registered.
+--- register(ka, kb, ops) fills both orders: (kb, ka) gets the same kernels with the
+--- arguments swapped and the results turned around (the way Box2D's b2AddType registers
+--- a pair once). A kernel written for (ka, kb) takes a last argument `flip`: when true it
+--- must report the pair as (kb, ka); collide kernels rely on it, contact kernels need not
+--- (a contact is the same points either way round; the normal and edge are turned).
+local dispatch = {}
 
-return {
-  polygon = { polygon = sat.polygonPolygon, circle = sat.polygonCircle, chain = chain.polygonChain },
-  circle = { polygon = sat.circlePolygon, circle = sat.circleCircle, chain = chain.circleChain },
-  chain = { polygon = chain.chainPolygon, circle = chain.chainCircle, chain = chain.chainChain },
-}
+--- Per-kind operations, dispatch.kind[kind].
+dispatch.kind = {}
+--- Per-pair operations, dispatch.pair[kindA][kindB].
+dispatch.pair = {}
+
+-- The operations a pair table has, in order, and which need a kernel.
+local PAIR_OPS = { 'collide', 'contact', 'distance', 'toi' }
+local REQUIRED = { collide = true, contact = true }
+
+local function row(ka)
+  local r = dispatch.pair[ka]
+  if not r then r = {}; dispatch.pair[ka] = r end
+  return r
+end
+
+--- Register what can be done with one shape of kind `k`.
+---@param k string
+---@param ops table { ray = function }
+function dispatch.registerKind(k, ops)
+  if type(k) ~= 'string' then error('dispatch.registerKind: the kind must be a string', 2) end
+  if type(ops) ~= 'table' or type(ops.ray) ~= 'function' then
+    error(('dispatch.registerKind: kind %q needs a ray function'):format(k), 2)
+  end
+  dispatch.kind[k] = ops
+  row(k)
+end
+
+--- Register the kernels of the ordered pair (ka, kb); the pair (kb, ka) is filled in too.
+---@param ka string
+---@param kb string
+---@param ops table { collide = function, contact = function, distance = function|nil, toi = function|nil }
+function dispatch.register(ka, kb, ops)
+  if not dispatch.kind[ka] or not dispatch.kind[kb] then
+    error(('dispatch.register: register the kinds %q and %q first'):format(tostring(ka), tostring(kb)), 2)
+  end
+  local fwd = {}
+  for _, name in ipairs(PAIR_OPS) do
+    local f = ops[name]
+    if f == nil or f == false then
+      if REQUIRED[name] then error(('dispatch.register: (%s, %s) needs a %s kernel'):format(ka, kb, name), 2) end
+      f = false
+    elseif type(f) ~= 'function' then
+      error(('dispatch.register: (%s, %s).%s must be a function'):format(ka, kb, name), 2)
+    end
+    fwd[name] = f
+  end
+  row(ka)[kb] = fwd
+  if ka == kb then return end
+  local collide, contact = fwd.collide, fwd.contact
+  row(kb)[ka] = {
+    collide = function(b, a, out) return collide(a, b, out, true) end,
+    contact = function(b, a, nx, ny, depth, edge, out) return contact(a, b, -nx, -ny, depth, -edge, out) end,
+    distance = false,
+    toi = false,
+  }
+end
+
+return dispatch

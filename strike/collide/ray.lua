@@ -26,8 +26,17 @@
 --- m = o - centre, solved in the numerically stable form: the discriminant is taken as
 --- r^2 - |m - b u|^2 (the squared distance from the centre to the line, which avoids the
 --- cancellation in b^2 - c), and the roots as q = -(b + sign(b) sqrt(disc)) and c / q.
+---
+--- Each kind's kernel (registered in kinds.lua, looked up through dispatch.kind) gives the
+--- interval and the outward unit normals at both of its ends; the queries below pick.
 local ROOT = (...):match('^(.-)%.collide%.[^%.]+$')
 local check = require(ROOT .. '.check')
+local layout = require(ROOT .. '.base.layout')
+local kinds = require(ROOT .. '.collide.dispatch').kind
+
+local X, Y, R = layout.X, layout.Y, layout.R
+local STRIDE, FIRST, VY, NX, NY, D = layout.STRIDE, layout.FIRST, layout.VY, layout.NX, layout.NY, layout.D
+local P1, P2 = layout.base(1), layout.base(2)
 
 local sqrt, abs, huge = math.sqrt, math.abs, math.huge
 local finite, fail, describe, number = check.finite, check.fail, check.describe, check.number
@@ -98,30 +107,38 @@ local unit = ray.unit
 
 --- Cyrus–Beck clipping of the ray (origin (ox, oy), unit direction (ux, uy)) against a
 --- convex polygon (3 or more vertices). Returns the interval lo, hi of the whole line
---- inside the polygon (lo may be negative; hi >= 0) and the faces that bound it: fin the
---- entering face that gives lo, fout the leaving face that gives hi (on ties, the first
---- face in order). Returns nil when the ray misses.
----@param s strike.VertexShape @param ox number @param oy number @param ux number @param uy number
----@return number|nil lo, number hi, integer fin, integer fout
-function ray.polygon(s, ox, oy, ux, uy)
+--- inside the polygon (lo may be negative; hi >= 0) and the normals of the faces that
+--- bound it: the entering face's at lo, the leaving face's at hi (on ties, the first face
+--- in order). Returns nil when the ray misses.
+---@param s strike.VertexShape
+---@param ox number
+---@param oy number
+---@param ux number
+---@param uy number
+---@return number|nil lo
+---@return number hi
+---@return number nxLo
+---@return number nyLo
+---@return number nxHi
+---@return number nyHi
+local function polygonClip(s, ox, oy, ux, uy)
   if s._dirty then s:_refresh() end
   local tin, tout, fin, fout = -huge, huge, 0, 0
-  for i = 1, s._n do
-    local k = 5 * i
-    local nx, ny = s[k + 2], s[k + 3]
+  for k = FIRST, layout.last(s._n), STRIDE do
+    local nx, ny = s[k + NX], s[k + NY]
     local den = nx * ux + ny * uy
-    local num = s[k + 4] - (nx * ox + ny * oy)
+    local num = s[k + D] - (nx * ox + ny * oy)
     if den < 0 then -- entering: t >= num / den
       local t = num / den
       if t > tin then
         if t > tout then return nil end
-        tin, fin = t, i
+        tin, fin = t, k
       end
     elseif den > 0 then -- leaving: t <= num / den
       local t = num / den
       if t < tout then
         if t < tin then return nil end
-        tout, fout = t, i
+        tout, fout = t, k
       end
     elseif num < 0 then -- parallel to the face and outside it
       return nil
@@ -129,21 +146,32 @@ function ray.polygon(s, ox, oy, ux, uy)
   end
   -- (behind the origin; the other two tests only fail for coordinates near overflow)
   if not (tout >= 0) or tout == huge or tin == huge then return nil end -- luacheck: ignore 581 (NaN reads as a miss)
-  return tin, tout, fin, fout
+  local nxLo, nyLo = 0, 0 -- (a ray starting inside has no entering face; lo < 0 is not reported)
+  if fin > 0 then nxLo, nyLo = s[fin + NX], s[fin + NY] end
+  return tin, tout, nxLo, nyLo, s[fout + NX], s[fout + NY]
 end
-local polygonClip = ray.polygon
+--- The polygon kernel (above): Cyrus–Beck clipping.
+ray.polygon = polygonClip
 
---- The ray against a segment (an Edge, 2 vertices). Returns lo, hi (lo <= hi, hi >= 0)
---- and cross(u, p2 - p1) (with p2 - p1 scaled; only its sign matters): not 0 for a
---- crossing (then lo == hi), 0 for a collinear ray (lo, hi: the overlap's ends along the
---- ray). Returns nil when the ray misses.
----@param s strike.VertexShape @param ox number @param oy number @param ux number @param uy number
----@return number|nil lo, number hi, number cross
-function ray.segment(s, ox, oy, ux, uy)
+--- The ray against a segment (an Edge or a chain segment, 2 vertices). Returns lo, hi
+--- (lo <= hi, hi >= 0) and the normals there: for a crossing (lo == hi), the side facing
+--- the ray's origin; for a collinear ray (lo, hi: the overlap's ends along the ray), the
+--- segment's direction at each end (-u at lo, +u at hi). Returns nil when the ray misses.
+---@param s strike.VertexShape
+---@param ox number
+---@param oy number
+---@param ux number
+---@param uy number
+---@return number|nil lo
+---@return number hi
+---@return number nxLo
+---@return number nyLo
+---@return number nxHi
+---@return number nyHi
+local function segmentClip(s, ox, oy, ux, uy)
   if s._dirty then s:_refresh() end
-  -- (p1 = (s[5], s[6]), p2 = (s[10], s[11]))
-  local ax, ay = s[5] - ox, s[6] - oy -- p1 relative to the origin
-  local ex, ey = s[10] - s[5], s[11] - s[6]
+  local ax, ay = s[P1] - ox, s[P1 + VY] - oy -- p1 relative to the origin
+  local ex, ey = s[P2] - s[P1], s[P2 + VY] - s[P1 + VY]
   -- o + t u = p1 + s e: t = cross(a, e) / cross(u, e), s = cross(a, u) / cross(u, e).
   -- (e is scaled to components of at most 1, so that cross(a, e) cannot overflow.)
   local k = abs(ex)
@@ -156,23 +184,69 @@ function ray.segment(s, ox, oy, ux, uy)
     if not (sp >= 0 and sp <= 1) then return nil end
     local t = (ax * ey - ay * ex) / den
     if not (t >= 0) or t == huge then return nil end -- luacheck: ignore 581 (NaN reads as a miss)
-    return t, t, den
+    -- (the sign of cross(u, e) is the sign of dot(u, normal 1): the side facing the origin)
+    local nx, ny = s[P1 + NX], s[P1 + NY]
+    if den > 0 then nx, ny = -nx, -ny end
+    return t, t, nx, ny, nx, ny
   end
   if cau ~= 0 then return nil end -- parallel, on another line
   local t1 = ax * ux + ay * uy
-  local t2 = (s[10] - ox) * ux + (s[11] - oy) * uy
+  local t2 = (s[P2] - ox) * ux + (s[P2 + VY] - oy) * uy
   if t1 > t2 then t1, t2 = t2, t1 end
   if not (t2 >= 0) or t2 == huge then return nil end -- luacheck: ignore 581 (NaN reads as a miss)
-  return t1, t2, 0
+  return t1, t2, -ux, -uy, ux, uy
 end
-local segmentClip = ray.segment
+--- The segment kernel (above).
+ray.segment = segmentClip
 
---- The ray against a circle: lo, hi (lo <= hi, hi >= 0), or nil when the ray misses.
----@param s strike.Circle @param ox number @param oy number @param ux number @param uy number
----@return number|nil lo, number hi
+--- The ray against any shape of the 'polygon' kind: polygons, and edges as segments.
+---@param s strike.VertexShape
+---@param ox number
+---@param oy number
+---@param ux number
+---@param uy number
+---@return number|nil lo
+---@return number hi
+---@return number nxLo
+---@return number nyLo
+---@return number nxHi
+---@return number nyHi
+function ray.vertexShape(s, ox, oy, ux, uy)
+  if s._n == 2 then return segmentClip(s, ox, oy, ux, uy) end
+  return polygonClip(s, ox, oy, ux, uy)
+end
+
+-- The outward unit normal of a circle centred on (cx, cy) at the point o + t u: the
+-- direction from the centre, scaled before it is squared so that tiny or huge circles
+-- still give a unit vector; `sign` * u when the point is the centre (a circle of radius 0).
+local function circleNormal(cx, cy, ox, oy, ux, uy, t, sign)
+  local hx, hy = ox + t * ux - cx, oy + t * uy - cy
+  local m = abs(hx)
+  if abs(hy) > m then m = abs(hy) end
+  if not (m > 0) or m == huge then return sign * ux, sign * uy end -- luacheck: ignore 581
+  hx, hy = hx / m, hy / m
+  local l = sqrt(hx * hx + hy * hy)
+  return hx / l, hy / l
+end
+
+--- The ray against a circle: lo, hi (lo <= hi, hi >= 0) and the outward unit normals there,
+--- or nil when the ray misses. A circle of radius 0 (a point) is hit only by a ray through
+--- it; its normal faces the ray (-u).
+---@param s strike.Circle
+---@param ox number
+---@param oy number
+---@param ux number
+---@param uy number
+---@return number|nil lo
+---@return number hi
+---@return number nxLo
+---@return number nyLo
+---@return number nxHi
+---@return number nyHi
 function ray.circle(s, ox, oy, ux, uy)
-  local r = s._r * s._scale
-  local mx, my = ox - s._x, oy - s._y
+  if s._dirty then s:_refresh() end
+  local r, cx, cy = s[R], s[X], s[Y]
+  local mx, my = ox - cx, oy - cy
   local b = mx * ux + my * uy
   local c = (mx * mx + my * my) - r * r
   if c > 0 and b > 0 then return nil end -- outside and pointing away
@@ -195,17 +269,26 @@ function ray.circle(s, ox, oy, ux, uy)
     if t1 > t2 then t1, t2 = t2, t1 end
   end
   if not (t2 >= 0) or t2 == huge then return nil end -- luacheck: ignore 581 (NaN reads as a miss)
-  return t1, t2
+  local nxLo, nyLo = circleNormal(cx, cy, ox, oy, ux, uy, t1, -1)
+  local nxHi, nyHi = circleNormal(cx, cy, ox, oy, ux, uy, t2, -1)
+  return t1, t2, nxLo, nyLo, nxHi, nyHi
 end
-local circleClip = ray.circle
 
---- The interval lo, hi of the ray inside any shape (see ray.polygon), or nil.
----@param s strike.Shape @param ox number @param oy number @param ux number @param uy number
----@return number|nil lo, number hi
+--- The interval lo, hi of the ray inside any shape, and the normals at its ends (see the
+--- kinds' kernels above), or nil.
+---@param s strike.Shape
+---@param ox number
+---@param oy number
+---@param ux number
+---@param uy number
+---@return number|nil lo
+---@return number hi
+---@return number nxLo
+---@return number nyLo
+---@return number nxHi
+---@return number nyHi
 function ray.clip(s, ox, oy, ux, uy)
-  if s.kind == 'circle' then return circleClip(s, ox, oy, ux, uy) end
-  if s._n == 2 then return segmentClip(s, ox, oy, ux, uy) end
-  return polygonClip(s, ox, oy, ux, uy)
+  return kinds[s.kind].ray(s, ox, oy, ux, uy)
 end
 local clip = ray.clip
 
@@ -265,36 +348,11 @@ end
 ---@param maxDistance number
 ---@return number|nil distance, number x, number y, number nx, number ny
 function ray.cast(s, ox, oy, ux, uy, maxDistance)
-  local t, nx, ny
-  if s.kind == 'circle' then
-    local lo, hi = circleClip(s, ox, oy, ux, uy)
-    if not lo then return nil end
-    if lo >= 0 then t = lo else t = hi end
-    if t > maxDistance then return nil end
-    local r = s._r * s._scale
-    nx, ny = (ox - s._x + t * ux) / r, (oy - s._y + t * uy) / r
-  elseif s._n == 2 then
-    local lo, hi, cross = segmentClip(s, ox, oy, ux, uy)
-    if not lo then return nil end
-    if lo >= 0 then t = lo else t = hi end
-    if t > maxDistance then return nil end
-    if cross > 0 then -- (the sign of cross(u, e) is the sign of dot(u, normal 1))
-      nx, ny = -s[7], -s[8]
-    elseif cross < 0 then
-      nx, ny = s[7], s[8]
-    elseif lo >= 0 then
-      nx, ny = -ux, -uy
-    else
-      nx, ny = ux, uy
-    end
-  else
-    local lo, hi, fin, fout = polygonClip(s, ox, oy, ux, uy)
-    if not lo then return nil end
-    local f
-    if lo >= 0 then t, f = lo, fin else t, f = hi, fout end
-    if t > maxDistance then return nil end
-    nx, ny = s[5 * f + 2], s[5 * f + 3]
-  end
+  local lo, hi, nxLo, nyLo, nxHi, nyHi = kinds[s.kind].ray(s, ox, oy, ux, uy)
+  if not lo then return nil end
+  local t, nx, ny = lo, nxLo, nyLo
+  if lo < 0 then t, nx, ny = hi, nxHi, nyHi end
+  if t > maxDistance then return nil end
   if t == 0 then t = 0.0 end
   return t, ox + t * ux, oy + t * uy, nx, ny
 end

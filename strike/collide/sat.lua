@@ -12,18 +12,29 @@
 --- Box2D's b2CollidePolygonAndCircle; circle against circle uses the centre line.
 ---
 --- Touching (depth exactly 0) is not a collision.
-local sat = {}
+---
+--- Reference-face hysteresis: when both shapes' best faces give almost the same depth
+--- (within HYSTERESIS times the first shape's size and distance from the origin: round-off,
+--- as for a box resting on another), the first shape's face wins, as in Box2D's
+--- b2CollidePolygons, so that the face, and the contact ids built on it, do not flip from
+--- one frame to the next. The MTV is then longer than the minimum by at most that much.
+---
+--- Kernels take (a, b, out [, flip]): with `flip` they report the pair as (b, a), which
+--- the dispatch table (dispatch.lua) uses for the reversed order of a pair of kinds.
+local ROOT = (...):match('^(.-)%.collide%.[^%.]+$')
+local layout = require(ROOT .. '.base.layout')
 
 local sqrt, huge, abs = math.sqrt, math.huge, math.abs
+local X, Y, R = layout.X, layout.Y, layout.R
+local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
+local STRIDE, FIRST, VY, NX, NY, D = layout.STRIDE, layout.FIRST, layout.VY, layout.NX, layout.NY, layout.D
+local base, last = layout.base, layout.last
 
--- The outermost collider of a shape, or the shape itself.
-local function root(s)
-  local p = s.parent
-  while p do s, p = p, p.parent end
-  return s
-end
---- root(shape): the outermost collider holding the shape, or the shape itself.
-sat.root = root
+local sat = {}
+
+--- Relative tolerance of the reference-face hysteresis (see the header).
+sat.HYSTERESIS = 1e-12
+local HYSTERESIS = sat.HYSTERESIS
 
 -- Fill `out`. (nx, ny) is the unit normal from a to b, depth > 0 means overlap. The
 -- callers (S.AT, S.triking) set out.collider and out.collided.
@@ -51,37 +62,35 @@ sat.result = result
 -- An Edge's two faces point opposite ways: a half turn, after which the old support is
 -- the new maximum, so each of them gets a full scan instead.
 local function maxSeparationWalk(A, B)
-  local na, nb = A._n, B._n
-  local best, bi, j = -huge, 1, 1
-  local pj
+  local na = A._n
+  local lastB = last(B._n)
+  local best, bi = -huge, 1
+  local j, pj -- B's support record (its slot) and its projection
   local first = na == 2 and 2 or 1 -- faces scanned in full
   for i = 1, first do
-    local k = 5 * i
-    local nx, ny = A[k + 2], A[k + 3]
-    j, pj = 1, nx * B[5] + ny * B[6]
-    for jj = 2, nb do
-      local r = 5 * jj
-      local p = nx * B[r] + ny * B[r + 1]
-      if p < pj then j, pj = jj, p end
+    local k = base(i)
+    local nx, ny = A[k + NX], A[k + NY]
+    j, pj = FIRST, nx * B[FIRST] + ny * B[FIRST + VY]
+    for r = FIRST + STRIDE, lastB, STRIDE do
+      local p = nx * B[r] + ny * B[r + VY]
+      if p < pj then j, pj = r, p end
     end
-    local s = pj - A[k + 4]
+    local s = pj - A[k + D]
     if s > best then
       best, bi = s, i
       if s >= 0 then return s, i end
     end
   end
   for i = first + 1, na do
-    local k = 5 * i
-    local nx, ny = A[k + 2], A[k + 3]
-    local r = 5 * j
-    pj = nx * B[r] + ny * B[r + 1]
+    local k = base(i)
+    local nx, ny = A[k + NX], A[k + NY]
+    pj = nx * B[j] + ny * B[j + VY]
     while true do
-      local jj = j < nb and j + 1 or 1
-      r = 5 * jj
-      local p = nx * B[r] + ny * B[r + 1]
-      if p < pj then j, pj = jj, p else break end
+      local r = j < lastB and j + STRIDE or FIRST
+      local p = nx * B[r] + ny * B[r + VY]
+      if p < pj then j, pj = r, p else break end
     end
-    local s = pj - A[k + 4]
+    local s = pj - A[k + D]
     if s > best then
       best, bi = s, i
       if s >= 0 then return s, i end
@@ -99,8 +108,8 @@ end
 -- 308k against 164k pairs/s).
 local min, max = math.min, math.max
 local function maxSeparationScan(A, B)
-  local na, nb = A._n, B._n
-  local last = 5 * nb -- B's last vertex record
+  local na = A._n
+  local lastB = last(B._n)
   local best, bi = -huge, 1
   local h = A._half
   if h > 0 then
@@ -110,18 +119,18 @@ local function maxSeparationScan(A, B)
     -- something separates, the lowest separating face (face i < h + 1 <= any face i + h).
     local sepI, sepS = 0, 0 -- the first separating face of the second half, if any
     for i = 1, h do
-      local k = 5 * i
-      local nx, ny = A[k + 2], A[k + 3]
+      local k = base(i)
+      local nx, ny = A[k + NX], A[k + NY]
       local lo, hi = huge, -huge
-      for r = 5, last, 5 do
-        local p = nx * B[r] + ny * B[r + 1]
+      for r = FIRST, lastB, STRIDE do
+        local p = nx * B[r] + ny * B[r + VY]
         lo, hi = min(lo, p), max(hi, p)
       end
-      local s = lo - A[k + 4]
+      local s = lo - A[k + D]
       if s >= 0 then return s, i end
       if s > best or (s == best and i < bi) then best, bi = s, i end
       local f = i + h
-      s = -hi - A[5 * f + 4]
+      s = -hi - A[base(f) + D]
       if s >= 0 then
         if sepI == 0 then sepI, sepS = f, s end
       elseif s > best or (s == best and f < bi) then
@@ -132,13 +141,13 @@ local function maxSeparationScan(A, B)
     return best, bi
   end
   for i = 1, na do
-    local k = 5 * i
-    local nx, ny = A[k + 2], A[k + 3]
+    local k = base(i)
+    local nx, ny = A[k + NX], A[k + NY]
     local s = huge
-    for r = 5, last, 5 do
-      s = min(s, nx * B[r] + ny * B[r + 1])
+    for r = FIRST, lastB, STRIDE do
+      s = min(s, nx * B[r] + ny * B[r + VY])
     end
-    s = s - A[k + 4]
+    s = s - A[k + D]
     if s > best then
       best, bi = s, i
       if s >= 0 then return s, i end
@@ -159,43 +168,53 @@ sat.maxSeparationWalk = maxSeparationWalk
 --- The scanning variant (LuaJIT).
 sat.maxSeparationScan = maxSeparationScan
 
---- Polygon (or edge) A against polygon (or edge) B.
----@param A strike.VertexShape @param B strike.VertexShape @param out table an MTV-shaped table
+-- The size of round-off in A's separations: its distance from the origin plus its extent.
+local function roundScale(A)
+  return abs(A[X]) + abs(A[Y]) + (A[MAXX] - A[MINX]) + (A[MAXY] - A[MINY])
+end
+
+--- Polygon (or edge) A against polygon (or edge) B: the face of either with the largest
+--- separation gives the MTV (A's face unless B's is larger beyond the hysteresis).
+---@param A strike.VertexShape
+---@param B strike.VertexShape
+---@param out table an MTV-shaped table
 ---@return table out
 function sat.polygonPolygon(A, B, out)
   if A._dirty then A:_refresh() end
   if B._dirty then B:_refresh() end
   local sA, iA = maxSeparation(A, B)
-  if sA >= 0 then return result(out, A, B, A[5 * iA + 2], A[5 * iA + 3], -sA, iA) end
+  local k = base(iA)
+  if sA >= 0 then return result(out, A, B, A[k + NX], A[k + NY], -sA, iA) end
   local sB, iB = maxSeparation(B, A)
-  if sB > sA then
-    return result(out, A, B, -B[5 * iB + 2], -B[5 * iB + 3], -sB, -iB)
+  if sB > sA and (sB >= 0 or sB - sA > HYSTERESIS * roundScale(A)) then
+    k = base(iB)
+    return result(out, A, B, -B[k + NX], -B[k + NY], -sB, -iB)
   end
-  return result(out, A, B, A[5 * iA + 2], A[5 * iA + 3], -sA, iA)
+  return result(out, A, B, A[k + NX], A[k + NY], -sA, iA)
 end
 
 -- Polygon P against circle C; when `flip`, report it as C against P.
 local function polygonCircle(P, C, out, flip)
   if P._dirty then P:_refresh() end
   if C._dirty then C:_refresh() end
-  local cx, cy, r = C[5], C[6], C[7] -- (the circle's world centre and radius)
+  local cx, cy, r = C[X], C[Y], C[R]
   local n = P._n
   local best, bi = -huge, 1
   for i = 1, n do
-    local k = 5 * i
-    local s = P[k + 2] * (cx - P[k]) + P[k + 3] * (cy - P[k + 1])
+    local k = base(i)
+    local s = P[k + NX] * (cx - P[k]) + P[k + NY] * (cy - P[k + VY])
     if s > best then
       best, bi = s, i
       if s >= r then break end
     end
   end
-  local k = 5 * bi
-  local nx, ny, depth, edge = P[k + 2], P[k + 3], r - best, bi
+  local k = base(bi)
+  local nx, ny, depth, edge = P[k + NX], P[k + NY], r - best, bi
   if (best > 0 or n == 2) and best < r then
     -- the centre is outside face bi (or, for an edge, anywhere on its line): the closest
     -- feature is the face or one of its ends
-    local l = bi < n and k + 5 or 5
-    local x1, y1, x2, y2 = P[k], P[k + 1], P[l], P[l + 1]
+    local l = base(bi < n and bi + 1 or 1)
+    local x1, y1, x2, y2 = P[k], P[k + VY], P[l], P[l + VY]
     local vx, vy
     if (cx - x1) * (x2 - x1) + (cy - y1) * (y2 - y1) <= 0 then
       vx, vy = x1, y1
@@ -214,25 +233,25 @@ local function polygonCircle(P, C, out, flip)
   return result(out, P, C, nx, ny, depth, edge)
 end
 
---- Polygon (or edge) P against circle C.
----@param P strike.VertexShape @param C strike.Circle @param out table
+--- Polygon (or edge) P against circle C; with `flip`, reported as C against P.
+---@param P strike.VertexShape
+---@param C strike.Circle
+---@param out table
+---@param flip boolean|nil
 ---@return table out
-function sat.polygonCircle(P, C, out) return polygonCircle(P, C, out, false) end
-
---- Circle C against polygon (or edge) P.
----@param C strike.Circle @param P strike.VertexShape @param out table
----@return table out
-function sat.circlePolygon(C, P, out) return polygonCircle(P, C, out, true) end
+sat.polygonCircle = polygonCircle
 
 --- Circle against circle. Concentric circles get the normal (0, -1).
----@param A strike.Circle @param B strike.Circle @param out table
+---@param A strike.Circle
+---@param B strike.Circle
+---@param out table
 ---@return table out
 function sat.circleCircle(A, B, out)
   if A._dirty then A:_refresh() end
   if B._dirty then B:_refresh() end
-  local dx, dy = B[5] - A[5], B[6] - A[6] -- (world centres and radii: see Circle)
+  local dx, dy = B[X] - A[X], B[Y] - A[Y]
   local d = sqrt(dx * dx + dy * dy)
-  local r = A[7] + B[7]
+  local r = A[R] + B[R]
   if d > 0 then
     return result(out, A, B, dx / d, dy / d, r - d, 0)
   end

@@ -41,7 +41,9 @@ local function caps(self)
   local a, b = self.shapes[1], self.shapes[2]
   if not a or a.kind ~= 'circle' then return nil end
   if not b or b.kind ~= 'circle' then return a:getRadius(), 0 end
-  local dx, dy = b._x - a._x, b._y - a._y
+  local ax, ay = a:getCentroid()
+  local bx, by = b:getCentroid()
+  local dx, dy = bx - ax, by - ay
   return a:getRadius(), sqrt(dx * dx + dy * dy)
 end
 

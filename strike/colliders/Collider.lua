@@ -17,6 +17,7 @@ local Object = require(ROOT .. '.class')
 local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
 local unpack = require(ROOT .. '.compat').unpack
+local rotate = require(ROOT .. '.vec').rotate
 
 local cos, sin, huge, abs = math.cos, math.sin, math.huge, math.abs
 local number, positive, optPoint, fail, describe = check.number, check.positive, check.optPoint, check.fail,
@@ -64,8 +65,16 @@ function Collider:add(...)
     if not (isShape(child) or isCollider(child)) then
       fail(('strike.Collider:add: argument %d must be a strike shape or collider, got %s'):format(i, describe(child)))
     end
+    if isShape(child) then
+      Shape.checkClass(getmetatable(child), ('strike.Collider:add: argument %d (a %s)'):format(i, tostring(child.name)))
+    end
     if child.parent then
       fail(('strike.Collider:add: argument %d already belongs to a collider; remove it first or add a copy'):format(i))
+    end
+    for j = 1, i - 1 do
+      if select(j, ...) == child then
+        fail(('strike.Collider:add: argument %d is argument %d again; a body can be added once'):format(i, j))
+      end
     end
     local p = self
     while p do
@@ -151,7 +160,15 @@ local function refreshLeaves(self)
   self._single = nl == 1 and leaves[1]
   self._leavesOK = true
 end
-Collider._refreshLeaves = refreshLeaves
+
+--- The flat list of leaf shapes, depth first in insertion order, and its length (the
+--- list is strike's: read it, never change it).
+---@return strike.Shape[] leaves
+---@return integer n
+function Collider:_leafList()
+  if not self._leavesOK then refreshLeaves(self) end
+  return self._leaves, self._nleaves
+end
 
 -- Level 2: area and centroid, bottom-up from the children's own sums. Needs no world
 -- vertices. Edges (no area) weigh by length, used when the whole tree has no area.
@@ -167,14 +184,14 @@ local function refreshMass(self)
       len, lx, ly = len + c._len, lx + c._lx, ly + c._ly
       cnt, sx, sy = cnt + c._cnt, sx + c._sx, sy + c._sy
     else
-      local a = c:getArea()
+      local a, x, y = c:getAreaCentroid()
       if a > 0 then
-        area, ax, ay = area + a, ax + a * c._x, ay + a * c._y
+        area, ax, ay = area + a, ax + a * x, ay + a * y
       else
         local l = 2 * c:getRadius()
-        len, lx, ly = len + l, lx + l * c._x, ly + l * c._y
+        len, lx, ly = len + l, lx + l * x, ly + l * y
       end
-      cnt, sx, sy = cnt + 1, sx + c._x, sy + c._y
+      cnt, sx, sy = cnt + 1, sx + x, sy + y
     end
   end
   self._area, self._ax, self._ay, self._len, self._lx, self._ly = area, ax, ay, len, lx, ly
@@ -353,16 +370,20 @@ function Collider:containsPoint(x, y)
 end
 
 -- Leaf poses after a transform: `pose(leaf, a, b, c)` returns the new x, y and scale.
-local function moved(s, dx, dy) return s._x + dx, s._y + dy, s._scale end
+local function moved(s, dx, dy)
+  local x, y = s:getCentroid()
+  return x + dx, y + dy, s._scale
+end
 
 local function rotated(s, a, rx, ry)
-  local c, sn = cos(a), sin(a)
-  local dx, dy = s._x - rx, s._y - ry
-  return rx + c * dx - sn * dy, ry + sn * dx + c * dy, s._scale
+  local x, y = s:getCentroid()
+  local dx, dy = rotate(x - rx, y - ry, cos(a), sin(a))
+  return rx + dx, ry + dy, s._scale
 end
 
 local function scaled(s, sf, rx, ry)
-  return rx + (s._x - rx) * sf, ry + (s._y - ry) * sf, s._scale * sf
+  local x, y = s:getCentroid()
+  return rx + (x - rx) * sf, ry + (y - ry) * sf, s._scale * sf
 end
 
 -- Give every leaf its new pose (and turn it by `turn`), or, when some leaf would overflow,
@@ -380,12 +401,8 @@ local function eachLeaf(self, fname, pose, a, b, c, turn)
   end
   for i = 1, n do
     local s = leaves[i]
-    s._x, s._y, s._scale = pose(s, a, b, c)
-    if turn then
-      local angle = s._angle + turn
-      s._angle, s._cos, s._sin = angle, cos(angle), sin(angle)
-    end
-    s:_touch()
+    local x, y, k = pose(s, a, b, c)
+    s:_place(x, y, k, turn)
   end
 end
 
@@ -455,14 +472,16 @@ function Collider:scale(sf, refx, refy)
 end
 
 --- An independent deep copy of the same class (children copied, parent links rebuilt);
---- then, if given, moved so its centroid is at (x, y) and rotated to `angle`.
+--- then, if given, moved so its centroid is at (x, y) and rotated to `angle`. strike's own
+--- data is duplicated; the values of your own fields (an `entity`, say) are shared by
+--- reference, not copied. The copy belongs to no collider.
 ---@param x number|nil @param y number|nil @param angle number|nil
 ---@return strike.Collider
 function Collider:copy(x, y, angle)
   local c = setmetatable({}, getmetatable(self))
   for k, v in pairs(self) do
     if k ~= 'parent' and k ~= 'shapes' and k ~= '_leaves' and k ~= '_leafPos' and k ~= '_single' then
-      c[k] = Shape._clone(v)
+      c[k] = v
     end
   end
   c._leavesOK, c._massOK, c._clean, c._single, c.shapes = false, false, false, false, {}

@@ -1,8 +1,13 @@
---- A true circle. Its world-space data (its array part, see Shape) is the bounds, then the
---- centre and the radius: self[5], self[6], self[7], which the narrow phase reads.
+--- A true circle: a point (its position, the centroid) with a radius. Its world data is
+--- the header every shape has (strike/base/layout.lua): bounds, centre and world radius,
+--- which the narrow phase reads; its local geometry is the radius `_r`.
 local ROOT = (...):match('^(.-)%.shapes%.[^%.]+$')
 local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
+local layout = require(ROOT .. '.base.layout')
+
+local X, Y, R = layout.X, layout.Y, layout.R
+local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
 
 local sqrt, pi = math.sqrt, math.pi
 local number, positive = check.number, check.positive
@@ -28,18 +33,11 @@ function Circle:new(x, y, r, angle)
   if angle ~= 0 then self:rotate(angle) end
 end
 
---- The pose, and the seven world-data slots laid out at construction (Point too).
----@param x number @param y number
-function Circle:_setPose(x, y)
-  for k = 1, 7 do self[k] = 0 end -- (refreshed before any use: the shape starts dirty)
-  Shape._setPose(self, x, y)
-end
-
 function Circle:_refresh()
   local r = self._r * self._scale
-  local x, y = self._x, self._y
-  self[1], self[2], self[3], self[4] = x - r, y - r, x + r, y + r
-  self[5], self[6], self[7] = x, y, r
+  local x, y = self[X], self[Y]
+  self[MINX], self[MINY], self[MAXX], self[MAXY] = x - r, y - r, x + r, y + r
+  self[R] = r
   self._dirty = false
 end
 
@@ -53,7 +51,7 @@ function Circle:getRadius() return self._r * self._scale end
 function Circle:project(nx, ny)
   number(nx, 'strike.Shape:project', 'nx')
   number(ny, 'strike.Shape:project', 'ny')
-  local d = self._x * nx + self._y * ny
+  local d = self[X] * nx + self[Y] * ny
   local r = self._r * self._scale
   return d - r, d + r
 end
@@ -63,7 +61,7 @@ end
 ---@return boolean
 function Circle:containsPoint(x, y)
   x, y = Shape._point(x, y, 'strike.Shape:containsPoint')
-  local dx, dy, r = x - self._x, y - self._y, self._r * self._scale
+  local dx, dy, r = x - self[X], y - self[Y], self._r * self._scale
   return dx * dx + dy * dy < r * r
 end
 
@@ -93,24 +91,25 @@ end
 ---@return number x, number y
 function Circle:getSupport(nx, ny)
   local r = self._r * self._scale
-  return self._x + nx * r, self._y + ny * r
+  return self[X] + nx * r, self[Y] + ny * r
 end
 
 -- Direction from the circle's centre toward `other` (its nearest vertex, or its centre),
 -- unit length; (0, -1) when they coincide.
 local function axisToward(self, other)
-  local cx, cy = self._x, self._y
+  local cx, cy = self[X], self[Y]
   local tx, ty
   if other and other._n then
     if other._dirty then other:_refresh() end
     local best = math.huge
-    for k = 5, 5 * other._n, 5 do
-      local dx, dy = other[k] - cx, other[k + 1] - cy
+    for i = 1, other._n do
+      local x, y = other:getVertex(i)
+      local dx, dy = x - cx, y - cy
       local d = dx * dx + dy * dy
-      if d < best then best, tx, ty = d, other[k], other[k + 1] end
+      if d < best then best, tx, ty = d, x, y end
     end
-  elseif other and other._x then
-    tx, ty = other._x, other._y
+  elseif other and other.type == 'shape' then
+    tx, ty = other:getCentroid()
   end
   if not tx then return 0, -1 end
   local dx, dy = tx - cx, ty - cy
@@ -124,7 +123,7 @@ local function circleEdgeIter(state, i)
   local self, other = state[1], state[2]
   local ax, ay = axisToward(self, other)
   local r = self._r * self._scale
-  local px, py = self._x + ax * r, self._y + ay * r
+  local px, py = self[X] + ax * r, self[Y] + ay * r
   -- the tangent at the point facing `other`, in positive winding
   return 1, px + ay * r, py - ax * r, px - ay * r, py + ax * r
 end
@@ -155,14 +154,14 @@ end
 --- Largest distance from (px, py) to the circle.
 ---@return number
 function Circle:_farthest(px, py)
-  local dx, dy = self._x - px, self._y - py
+  local dx, dy = self[X] - px, self[Y] - py
   return sqrt(dx * dx + dy * dy) + self._r * self._scale
 end
 
 --- Arguments that rebuild the circle as it is now: x, y, radius, angle.
 ---@return number, number, number, number
 function Circle:unpack()
-  return self._x, self._y, self._r * self._scale, self._angle
+  return self[X], self[Y], self._r * self._scale, self._angle
 end
 
 return Circle

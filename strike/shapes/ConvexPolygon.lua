@@ -72,7 +72,7 @@ function ConvexPolygon:merge(other)
   for _, s in ipairs({ self, other }) do
     for i = 1, s._n do
       n = n + 1
-      xs[n], ys[n] = s[5 * i], s[5 * i + 1]
+      xs[n], ys[n] = s:getVertex(i)
     end
   end
   local hx, hy, h = hull.build(xs, ys, n)

@@ -31,7 +31,7 @@ function Ellipse:new(x, y, a, b, n, angle)
   end
   self.a, self.b, self.n = a, b, n
   Ellipse.super.new(self, pts)
-  self._x, self._y = x, y
+  self:_placeCentroid(x, y) -- the exact centre
   if angle ~= 0 then self:rotate(angle) end
 end
 
@@ -39,7 +39,8 @@ end
 ---@return number, number, number, number, integer, number
 function Ellipse:unpack()
   local s = self._scale
-  return self._x, self._y, self.a * s, self.b * s, self.n, self._angle
+  local cx, cy = self:getCentroid()
+  return cx, cy, self.a * s, self.b * s, self.n, self._angle
 end
 
 return Ellipse

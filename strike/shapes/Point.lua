@@ -21,7 +21,7 @@ end
 --- Arguments that rebuild the point as it is now: x, y.
 ---@return number, number
 function Point:unpack()
-  return self._x, self._y
+  return self:getCentroid()
 end
 
 return Point

@@ -20,7 +20,7 @@ function Rectangle:new(x, y, dx, dy, angle)
   local hx, hy = dx / 2, dy / 2
   self.dx, self.dy = dx, dy
   Rectangle.super.new(self, x - hx, y - hy, x + hx, y - hy, x + hx, y + hy, x - hx, y + hy)
-  self._x, self._y = x, y -- the exact centre, free of round-off
+  self:_placeCentroid(x, y) -- the exact centre, free of round-off
   if angle ~= 0 then self:rotate(angle) end
 end
 
@@ -28,7 +28,8 @@ end
 ---@return number, number, number, number, number
 function Rectangle:unpack()
   local s = self._scale
-  return self._x, self._y, self.dx * s, self.dy * s, self._angle
+  local x, y = self:getCentroid()
+  return x, y, self.dx * s, self.dy * s, self._angle
 end
 
 return Rectangle

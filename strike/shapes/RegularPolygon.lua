@@ -26,14 +26,15 @@ function RegularPolygon:new(x, y, n, radius, angle)
   end
   self.n, self.radius = n, radius
   RegularPolygon.super.new(self, pts)
-  self._x, self._y = x, y
+  self:_placeCentroid(x, y) -- the exact centre
   if angle ~= 0 then self:rotate(angle) end
 end
 
 --- Arguments that rebuild it as it is now: x, y, n, radius, angle.
 ---@return number, number, integer, number, number
 function RegularPolygon:unpack()
-  return self._x, self._y, self.n, self.radius * self._scale, self._angle
+  local cx, cy = self:getCentroid()
+  return cx, cy, self.n, self.radius * self._scale, self._angle
 end
 
 return RegularPolygon

@@ -1,0 +1,59 @@
+--- The shape data contract: where a shape keeps its world-space data. This file is the only
+--- place that spells a slot number; every other file reads these names.
+---
+--- A shape is its own world-data array (the narrow phase reads one table per shape and
+--- follows no pointer). Every shape has the same header:
+---
+---   slot  name   meaning
+---   1-4   MINX, MINY, MAXX, MAXY   axis-aligned bounds            refreshed when dirty
+---   5-6   X, Y   the pose's position: the centroid (a circle's     always current: transforms
+---                centre), in world coordinates                     write it directly
+---   7     R      the world radius the shape is rounded by: a       refreshed when dirty
+---                circle's radius; 0 for polygons and segments
+---
+--- Shapes made of vertices (VertexShape: polygons, edges, chain segments) follow with one
+--- record of STRIDE numbers per vertex; vertex i's record starts at slot base(i) =
+--- STRIDE * i + BASE and holds, at these offsets from its start:
+---   VX, VY   the vertex
+---   NX, NY   the unit outward normal of edge i (vertex i to vertex i + 1, wrapping)
+---   D        the offset of edge i's line along that normal: dot(normal i, vertex i)
+--- All refreshed when dirty. A shape with n vertices has size(n) slots.
+---
+--- Everything else a shape keeps (local geometry, pose angle and scale, flags) is in named
+--- fields; a shape's integer keys are strike's alone.
+local layout = {}
+
+--- The bounds' slots.
+layout.MINX, layout.MINY, layout.MAXX, layout.MAXY = 1, 2, 3, 4
+--- The position's slots.
+layout.X, layout.Y = 5, 6
+--- The radius slot.
+layout.R = 7
+--- Number of header slots (bounds, position, radius).
+layout.HEADER = 7
+
+--- Slots per vertex record.
+layout.STRIDE = 5
+--- Offsets in a vertex record.
+layout.VX, layout.VY, layout.NX, layout.NY, layout.D = 0, 1, 2, 3, 4
+--- base(i) = STRIDE * i + BASE: vertex 1's record starts right after the header.
+layout.BASE = layout.HEADER + 1 - layout.STRIDE
+--- The first vertex record's slot, base(1).
+layout.FIRST = layout.HEADER + 1
+
+--- The slot where vertex i's record starts.
+---@param i integer
+---@return integer
+function layout.base(i) return layout.STRIDE * i + layout.BASE end
+
+--- The slot of the last vertex record's start, for a shape of n vertices: base(n).
+---@param n integer
+---@return integer
+function layout.last(n) return layout.STRIDE * n + layout.BASE end
+
+--- Number of array slots a shape of n vertices uses (the header alone for n = 0).
+---@param n integer
+---@return integer
+function layout.size(n) return layout.HEADER + layout.STRIDE * n end
+
+return layout

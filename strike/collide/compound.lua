@@ -1,0 +1,100 @@
+--- Collision between two bodies (colliders, nested to any depth, or bare shapes): the pair
+--- loop over their leaf shapes. S.triking calls it, and so will anything else that tests
+--- whole bodies. The caller has checked that both are bodies and that `out` is an MTV-shaped
+--- table or nil.
+---
+--- The answer is the deepest MTV over all pairs of leaves whose bounds meet, or false when
+--- no pair collides; bodies under one root collider never collide. It reads a collider's
+--- leaf list through the cache protocol of colliders/Collider.lua (`_single`: the only
+--- leaf, valid while the list is).
+local ROOT = (...):match('^(.-)%.collide%.[^%.]+$')
+local MTV = require(ROOT .. '.collide.MTV')
+local Shape = require(ROOT .. '.base.Shape')
+local Collider = require(ROOT .. '.colliders.Collider')
+local layout = require(ROOT .. '.base.layout')
+local pair = require(ROOT .. '.collide.dispatch').pair
+
+local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
+local min, max = math.min, math.max
+local root, leafList = Shape.getRoot, Collider._leafList
+
+local compound = {}
+
+-- Scratch state: two MTVs swapped as the best one changes.
+local tmpA, tmpB = MTV(), MTV()
+
+--- Fill the fields of `out` that name the bodies and the poses it was computed for.
+---@param out strike.MTV
+---@param r1 table the first body's root
+---@param r2 table the second body's root
+---@return strike.MTV out
+function compound.stamp(out, r1, r2)
+  out.collider, out.collided = r1, r2
+  out._poseA, out._poseB = out.colliderShape._pose, out.collidedShape._pose
+  return out
+end
+local stamp = compound.stamp
+
+-- The only leaf of a body when it has exactly one (a bare shape is its own), else false.
+local function singleOf(body)
+  local s = body._single
+  if s == nil then return body end -- (a shape: colliders always have the field)
+  return s
+end
+
+--- The deepest MTV between the leaves of two bodies (see the header), filled into `out`
+--- when given (its contents are unspecified after false), or false.
+---@param body1 strike.Collider|strike.Shape
+---@param body2 strike.Collider|strike.Shape
+---@param out strike.MTV|nil
+---@return strike.MTV|false
+function compound.collide(body1, body2, out)
+  local r1, r2 = root(body1), root(body2)
+  if r1 == r2 then return false end -- every leaf pair would share a root
+  local s1, s2 = singleOf(body1), singleOf(body2)
+  if s1 and s2 then
+    -- One leaf each, the common case: straight-line code (LuaJIT traces one-trip loops
+    -- badly), tested into the caller's `out` when there is one.
+    if s1._dirty then s1:_refresh() end
+    if s2._dirty then s2:_refresh() end
+    if s1[MAXX] < s2[MINX] or s2[MAXX] < s1[MINX] or s1[MAXY] < s2[MINY] or s2[MAXY] < s1[MINY] then
+      return false -- the bounds do not even meet
+    end
+    local m = pair[s1.kind][s2.kind].collide(s1, s2, out or tmpA)
+    if not (m.depth > 0) then return false end -- luacheck: ignore 581 (NaN reads as no collision)
+    if not out then out = MTV.set(MTV(), m) end
+    return stamp(out, r1, r2)
+  end
+  local l1, n1, l2, n2
+  if body1.type == 'collider' then l1, n1 = leafList(body1) else l1, n1 = nil, 1 end
+  if body2.type == 'collider' then l2, n2 = leafList(body2) else l2, n2 = nil, 1 end
+  -- Test into `tmp`; a deeper result becomes `best` and the other buffer becomes `tmp`.
+  -- With an `out` table it is one of the two buffers, so the usual single hit needs no copy.
+  local best, tmp, found = tmpA, out or tmpB, false
+  local bestDepth = 0
+  for i = 1, n1 do
+    local a = l1 and l1[i] or body1
+    if a._dirty then a:_refresh() end
+    local ax0, ay0, ax1, ay1 = a[MINX], a[MINY], a[MAXX], a[MAXY]
+    local row = pair[a.kind]
+    for j = 1, n2 do
+      local b = l2 and l2[j] or body2
+      if b._dirty then b:_refresh() end
+      -- Bounds meet (closed intervals: an axis-aligned edge or a point has a flat box;
+      -- the narrow phase decides touching), as two tests instead of four: fewer trace
+      -- exits under LuaJIT.
+      if min(ax1, b[MAXX]) >= max(ax0, b[MINX]) and min(ay1, b[MAXY]) >= max(ay0, b[MINY]) then
+        row[b.kind].collide(a, b, tmp)
+        local d = tmp.depth
+        if d > bestDepth then -- (false for NaN and for separating results)
+          best, tmp, found, bestDepth = tmp, best, true, d
+        end
+      end
+    end
+  end
+  if not found then return false end
+  if best ~= out then out = MTV.set(out or MTV(), best) end
+  return stamp(out, r1, r2)
+end
+
+return compound
