@@ -47,6 +47,10 @@ describe('the headless demo', function()
     assert.equals(summary.collisions, count(svg, 'class="mtv"'))
     assert.equals(summary.contacts, count(svg, 'class="contact"'))
     assert.equals(1, count(svg, 'class="ray"'))
+    -- the arrows are drawn longer than the MTVs: both the picture and the report say so
+    assert.equals(1, count(svg, 'class="legend"'))
+    assert.matches('<text class="legend"[^>]*>[^<]*drawn 4× their length', svg)
+    assert.matches('MTV arrow is drawn 4 times its length', report)
     local shapes = 0
     for _, item in ipairs(demo.scene()) do shapes = shapes + item.body:getShapeCount() end
     assert.equals(shapes, summary.shapes)
