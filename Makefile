@@ -1,10 +1,10 @@
-# strike: make test runs luacheck, the copy check, the LÖVE screenshot checks and the busted
-# suite under every Lua VM.
+# strike: make test runs luacheck, the LuaLS annotation check, the copy check, the LÖVE
+# screenshot checks and the busted suite under every Lua VM.
 VMS ?= lua5.1 lua5.2 lua5.3 lua5.4 luajit
 
-.PHONY: test deps lint spec copy-check love-check bench demo
+.PHONY: test deps lint annotations annotations-fix spec copy-check love-check bench demo
 
-test: deps lint copy-check love-check spec
+test: deps lint annotations copy-check love-check spec
 
 # Installs what the checks need (Debian packages) when it is missing and this machine can
 # (root with apt-get); otherwise says exactly what to install.
@@ -14,6 +14,18 @@ deps:
 lint:
 	@echo "== luacheck"
 	@luacheck --formatter plain --codes .
+
+# Every public function in strike/ has LuaLS annotations the language server can read: one
+# tag per line, a ---@param per parameter in order, ---@return when it returns a value
+# (rules: tools/annotations.lua). `make annotations-fix` splits lines carrying several tags.
+ANNOTATIONS_LUA ?= $(firstword $(VMS))
+
+annotations:
+	@echo "== annotations"
+	@$(ANNOTATIONS_LUA) tools/annotations.lua $$(find strike -name '*.lua' | sort)
+
+annotations-fix:
+	@$(ANNOTATIONS_LUA) tools/annotations.lua --fix $$(find strike -name '*.lua' | sort)
 
 # The screenshot spec reads SHOTS when love-check completed a set there (SHOTS/ok).
 spec:
