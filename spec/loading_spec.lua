@@ -116,26 +116,4 @@ describe('the source', function()
     end
   end)
 
-  it('annotates every public function with LuaLS comments', function()
-    for _, path in ipairs(sources()) do
-      local lines = {}
-      for line in (read(path) .. '\n'):gmatch('([^\n]*)\n') do lines[#lines + 1] = line end
-      for i, line in ipairs(lines) do
-        local name, params = line:match('^function ([%w_]+[%.:][%a][%w_]*)%(([^)]*)%)')
-        name = name or line:match('^[%w_]+%.([%a][%w_]*) = [%w_%.]+$')
-        if name and not name:match('[%.:]_') then
-          local j, block = i - 1, ''
-          while j >= 1 and lines[j]:match('^%-%-%-') do
-            block = block .. lines[j]
-            j = j - 1
-          end
-          assert(block ~= '', ('%s:%d: %s has no --- annotation'):format(path, i, name))
-          if params and params:match('[%a_]') and params ~= '...' then
-            assert(block:find('@param', 1, true), ('%s:%d: %s has no ---@param'):format(path, i, name))
-          end
-        end
-      end
-    end
-  end)
-
 end)

@@ -55,7 +55,9 @@ end
 check.finite = finite
 
 --- Require a finite number.
----@param v any @param fname string @param what string
+---@param v any
+---@param fname string
+---@param what string
 ---@return number
 function check.number(v, fname, what)
   if not finite(v) then
@@ -65,7 +67,10 @@ function check.number(v, fname, what)
 end
 
 --- Require a finite number, or nil (then return `default`).
----@param v any @param fname string @param what string @param default any
+---@param v any
+---@param fname string
+---@param what string
+---@param default any
 ---@return any
 function check.optNumber(v, fname, what, default)
   if v == nil then return default end
@@ -73,7 +78,9 @@ function check.optNumber(v, fname, what, default)
 end
 
 --- Require a finite number > 0.
----@param v any @param fname string @param what string
+---@param v any
+---@param fname string
+---@param what string
 ---@return number
 function check.positive(v, fname, what)
   if not finite(v) or v <= 0 then
@@ -83,7 +90,11 @@ function check.positive(v, fname, what)
 end
 
 --- Require an integer in [lo, hi].
----@param v any @param fname string @param what string @param lo integer @param hi integer
+---@param v any
+---@param fname string
+---@param what string
+---@param lo integer
+---@param hi integer
 ---@return integer
 function check.integer(v, fname, what, lo, hi)
   if not finite(v) or v % 1 ~= 0 or v < lo or v > hi then
@@ -94,7 +105,8 @@ end
 
 --- Coordinates given as x1, y1, x2, y2, ... or as one table {x1, y1, ...}: split into
 --- arrays of finite numbers, or raise an error naming the bad value.
----@param fname string @param ... number|number[]
+---@param fname string
+---@param ... number|number[]
 ---@return number[] xs, number[] ys, integer n
 function check.coordinates(fname, ...)
   local args, count = ..., select('#', ...)
@@ -117,7 +129,9 @@ function check.coordinates(fname, ...)
 end
 
 --- Either both of an optional reference point are given, or neither.
----@param x any @param y any @param fname string
+---@param x any
+---@param y any
+---@param fname string
 ---@return number|nil, number|nil
 function check.optPoint(x, y, fname)
   if x == nil and y == nil then return nil, nil end

@@ -60,7 +60,8 @@ local function outline(g, s, mode)
 end
 
 --- Draw a shape, or every leaf of a collider, in the current colour.
----@param body table a shape or collider @param mode string|nil 'line' (default) or 'fill'
+---@param body table a shape or collider
+---@param mode string|nil 'line' (default) or 'fill'
 function draw.body(body, mode)
   local g = graphics('strike:draw')
   if mode == nil then mode = 'line' end
@@ -108,7 +109,8 @@ local function normals(g, body, len) eachLeaf(g, body, shapeNormals, len) end
 
 --- Draw outward normals (cyan), `len` long (default 15): at each edge's midpoint, and
 --- eight around each circle.
----@param body table a shape or collider @param len number|nil
+---@param body table a shape or collider
+---@param len number|nil
 function draw.normals(body, len)
   local g = graphics('strike.howNorms')
   checkBody('strike.howNorms', body)
@@ -154,7 +156,8 @@ local function contactMarks(g, contacts, len)
 end
 
 --- Draw contact points from S.ite (green dots) with the normal, `len` long (default 15).
----@param contacts table|nil the result of S.ite (nil draws nothing) @param len number|nil
+---@param contacts table|nil the result of S.ite (nil draws nothing)
+---@param len number|nil
 function draw.contacts(contacts, len)
   local g = graphics('strike.howContacts')
   if contacts == nil then return end
@@ -181,7 +184,11 @@ end
 
 --- Cast a ray at a shape or collider and draw it (magenta): up to the first hit, the hit
 --- point and its normal; or the whole ray (up to maxDistance, else 10,000 units) on a miss.
----@param body table @param x number @param y number @param dx number @param dy number
+---@param body table
+---@param x number
+---@param y number
+---@param dx number
+---@param dy number
 ---@param maxDistance number|nil
 ---@return number|nil distance the hit's distance, as body:rayCast gives it
 function draw.ray(body, x, y, dx, dy, maxDistance)

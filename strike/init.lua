@@ -218,7 +218,8 @@ function S.howMTV(mtv) drawing().mtv(mtv) end
 
 --- Draw the outward normals of a collider's (or shape's) shapes (cyan), `len` long
 --- (default 15); circles get eight.
----@param collider strike.Collider|strike.Shape @param len number|nil
+---@param collider strike.Collider|strike.Shape
+---@param len number|nil
 function S.howNorms(collider, len) drawing().normals(collider, len) end
 
 --- Draw both shapes' projections on the MTV's axis (yellow), side by side.
@@ -226,12 +227,17 @@ function S.howNorms(collider, len) drawing().normals(collider, len) end
 function S.howProj(mtv) drawing().projections(mtv) end
 
 --- Draw the contact points from S.ite (green) with their normal, `len` long (default 15).
----@param contacts table|nil @param len number|nil
+---@param contacts table|nil
+---@param len number|nil
 function S.howContacts(contacts, len) drawing().contacts(contacts, len) end
 
 --- Cast a ray at a shape or collider and draw it (magenta) up to its first hit, with the
 --- hit point and normal. Returns the hit's distance, or nil.
----@param body strike.Shape|strike.Collider @param x number @param y number @param dx number @param dy number
+---@param body strike.Shape|strike.Collider
+---@param x number
+---@param y number
+---@param dx number
+---@param dy number
 ---@param maxDistance number|nil
 ---@return number|nil
 function S.howRay(body, x, y, dx, dy, maxDistance) return drawing().ray(body, x, y, dx, dy, maxDistance) end

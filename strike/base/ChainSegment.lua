@@ -55,8 +55,14 @@ end
 --- chain's point before p1, and (x3, y3), the point after p2; either pair may be nil (an
 --- open end). S.trikers.Chain builds these; the endpoints must differ, and each ghost
 --- vertex must differ from the endpoint it joins.
----@param x1 number @param y1 number @param x2 number @param y2 number
----@param x0 number|nil @param y0 number|nil @param x3 number|nil @param y3 number|nil
+---@param x1 number
+---@param y1 number
+---@param x2 number
+---@param y2 number
+---@param x0 number|nil
+---@param y0 number|nil
+---@param x3 number|nil
+---@param y3 number|nil
 function ChainSegment:new(x1, y1, x2, y2, x0, y0, x3, y3)
   number(x1, FNAME, 'x1')
   number(y1, FNAME, 'y1')

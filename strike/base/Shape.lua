@@ -125,7 +125,8 @@ function Shape:_touch()
 end
 
 --- Move by (dx, dy).
----@param dx number @param dy number
+---@param dx number
+---@param dy number
 ---@return self
 function Shape:translate(dx, dy)
   number(dx, 'strike.Shape:translate', 'dx')
@@ -136,7 +137,8 @@ function Shape:translate(dx, dy)
 end
 
 --- Move the centroid to (x, y).
----@param x number @param y number
+---@param x number
+---@param y number
 ---@return self
 function Shape:translateTo(x, y)
   number(x, 'strike.Shape:translateTo', 'x')
@@ -160,7 +162,9 @@ end
 
 --- Rotate by `angle` radians (positive turns +x toward +y, as love.graphics.rotate does)
 --- about (refx, refy), by default the centroid.
----@param angle number @param refx number|nil @param refy number|nil
+---@param angle number
+---@param refx number|nil
+---@param refy number|nil
 ---@return self
 function Shape:rotate(angle, refx, refy)
   number(angle, 'strike.Shape:rotate', 'angle')
@@ -170,7 +174,9 @@ end
 
 --- Rotate to the absolute `angle` about (refx, refy), by default the centroid: the same
 --- as rotate(angle - getAngle(), refx, refy).
----@param angle number @param refx number|nil @param refy number|nil
+---@param angle number
+---@param refx number|nil
+---@param refy number|nil
 ---@return self
 function Shape:rotateTo(angle, refx, refy)
   number(angle, 'strike.Shape:rotateTo', 'angle')
@@ -180,7 +186,9 @@ end
 
 --- Scale by factor `sf` (> 0) about (refx, refy), by default the centroid. Calls compose:
 --- scale(2) then scale(3) is scale(6).
----@param sf number @param refx number|nil @param refy number|nil
+---@param sf number
+---@param refx number|nil
+---@param refy number|nil
 ---@return self
 function Shape:scale(sf, refx, refy)
   positive(sf, 'strike.Shape:scale', 'factor')
@@ -290,7 +298,11 @@ local rayIntersections, rayIntersects, rayCast, segmentCast = ray.intersections,
 --- origin. Two for a ray that passes through; one for a graze or tangent, for a ray
 --- starting inside (its exit) and for an Edge it crosses; a collinear ray on an Edge gives
 --- the overlap's ends. Fills `ts` from index 1 (entries past n cleared; nothing allocated) or a new table.
----@param x number @param y number @param dx number @param dy number @param ts number[]|nil
+---@param x number
+---@param y number
+---@param dx number
+---@param dy number
+---@param ts number[]|nil
 ---@return number[]|nil ts, integer n the list and the count; nil, 0 when the ray misses
 function Shape:rayIntersections(x, y, dx, dy, ts)
   checkRay('strike.Shape:rayIntersections', x, y, dx, dy)
@@ -300,7 +312,10 @@ end
 
 --- True when the ray from (x, y) along (dx, dy) hits the shape (exactly when
 --- rayIntersections returns a list). Allocates nothing.
----@param x number @param y number @param dx number @param dy number
+---@param x number
+---@param y number
+---@param dx number
+---@param dy number
 ---@return boolean
 function Shape:rayIntersects(x, y, dx, dy)
   checkRay('strike.Shape:rayIntersects', x, y, dx, dy)
@@ -314,7 +329,11 @@ end
 --- on ties, the lower-numbered face); a circle's is (hit - centre) / r. An Edge's normal
 --- faces the ray's origin; for a ray along the Edge it is the segment's direction at the
 --- end hit. Allocates nothing.
----@param x number @param y number @param dx number @param dy number @param maxDistance number|nil
+---@param x number
+---@param y number
+---@param dx number
+---@param dy number
+---@param maxDistance number|nil
 ---@return number|nil distance, number x, number y, number nx, number ny
 function Shape:rayCast(x, y, dx, dy, maxDistance)
   checkRay('strike.Shape:rayCast', x, y, dx, dy)
@@ -323,7 +342,10 @@ end
 
 --- rayCast along the segment from (x1, y1) to (x2, y2): the first hit on the segment, its
 --- distance from (x1, y1) in units of length; nil when there is none or p1 == p2.
----@param x1 number @param y1 number @param x2 number @param y2 number
+---@param x1 number
+---@param y1 number
+---@param x2 number
+---@param y2 number
 ---@return number|nil distance, number x, number y, number nx, number ny
 function Shape:segmentCast(x1, y1, x2, y2)
   checkSegment('strike.Shape:segmentCast', x1, y1, x2, y2)

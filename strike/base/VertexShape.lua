@@ -155,7 +155,8 @@ function VertexShape:getVertices(out)
 end
 
 --- Minimum and maximum of the shape's projection on the unit vector (nx, ny).
----@param nx number @param ny number
+---@param nx number
+---@param ny number
 ---@return number min, number max
 function VertexShape:project(nx, ny)
   number(nx, 'strike.Shape:project', 'nx')
@@ -171,7 +172,8 @@ function VertexShape:project(nx, ny)
 end
 
 --- Index of the vertex farthest along (nx, ny); the lowest index wins ties.
----@param nx number @param ny number
+---@param nx number
+---@param ny number
 ---@return integer
 function VertexShape:getSupport(nx, ny)
   if self._dirty then self:_refresh() end
@@ -186,7 +188,8 @@ end
 
 --- True when the point is strictly inside (a point on the boundary is not inside; an Edge
 --- has no inside). Takes x, y or a table {x = , y = }.
----@param x number|table @param y number|nil
+---@param x number|table
+---@param y number|nil
 ---@return boolean
 function VertexShape:containsPoint(x, y)
   x, y = Shape._point(x, y, 'strike.Shape:containsPoint')
@@ -232,7 +235,8 @@ function VertexShape:vecs()
 end
 
 --- Largest distance from (px, py) to the shape (to its farthest vertex).
----@param px number @param py number
+---@param px number
+---@param py number
 ---@return number
 function VertexShape:_farthest(px, py)
   if self._dirty then self:_refresh() end

@@ -28,8 +28,10 @@ MTV.name = 'MTV'
 MTV.type = 'mtv'
 
 --- A new MTV: vector (dx, dy) (default 0, 0) between two shapes.
----@param dx number|nil @param dy number|nil
----@param colliderShape strike.Shape|nil @param collidedShape strike.Shape|nil
+---@param dx number|nil
+---@param dy number|nil
+---@param colliderShape strike.Shape|nil
+---@param collidedShape strike.Shape|nil
 ---@param separating boolean|nil
 function MTV:new(dx, dy, colliderShape, collidedShape, separating)
   dx = check.optNumber(dx, 'strike.MTV', 'dx', 0)
@@ -67,17 +69,23 @@ function MTV:scale(s)
   return self
 end
 
----@param collider table @return self
+---@param collider table
+---@return self
 function MTV:setCollider(collider) self.collider = collider return self end
----@param collided table @return self
+---@param collided table
+---@return self
 function MTV:setCollided(collided) self.collided = collided return self end
----@param shape strike.Shape @return self
+---@param shape strike.Shape
+---@return self
 function MTV:setColliderShape(shape) self.colliderShape = shape return self end
----@param shape strike.Shape @return self
+---@param shape strike.Shape
+---@return self
 function MTV:setCollidedShape(shape) self.collidedShape = shape return self end
----@param index integer @return self
+---@param index integer
+---@return self
 function MTV:setEdgeIndex(index) self.edgeIndex = index return self end
----@param separating boolean @return self
+---@param separating boolean
+---@return self
 function MTV:setSeparating(separating) self.separating = separating and true or false return self end
 
 --- Copy every field of `other` into this MTV.

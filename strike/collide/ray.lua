@@ -47,7 +47,11 @@ local ray = {}
 
 --- Raise an error at the caller's line unless x, y, dx, dy are finite numbers and
 --- (dx, dy) is not the zero vector. `fname` names the public function.
----@param fname string @param x any @param y any @param dx any @param dy any
+---@param fname string
+---@param x any
+---@param y any
+---@param dx any
+---@param dy any
 function ray.checkRay(fname, x, y, dx, dy)
   if not (finite(x) and finite(y) and finite(dx) and finite(dy)) then
     number(x, fname, 'x')
@@ -59,7 +63,11 @@ function ray.checkRay(fname, x, y, dx, dy)
 end
 
 --- Raise an error at the caller's line unless x1, y1, x2, y2 are finite numbers.
----@param fname string @param x1 any @param y1 any @param x2 any @param y2 any
+---@param fname string
+---@param x1 any
+---@param y1 any
+---@param x2 any
+---@param y2 any
 function ray.checkSegment(fname, x1, y1, x2, y2)
   if not (finite(x1) and finite(y1) and finite(x2) and finite(y2)) then
     number(x1, fname, 'x1')
@@ -71,7 +79,8 @@ end
 
 --- The maximum distance of a cast: nil means math.huge; anything but a number >= 0
 --- (math.huge allowed, NaN not) raises an error at the caller's line.
----@param fname string @param maxDistance any
+---@param fname string
+---@param maxDistance any
 ---@return number
 function ray.checkMax(fname, maxDistance)
   if maxDistance == nil then return huge end
@@ -82,7 +91,8 @@ function ray.checkMax(fname, maxDistance)
 end
 
 --- Raise an error at the caller's line unless `ts` is a table or nil.
----@param fname string @param ts any
+---@param fname string
+---@param ts any
 function ray.checkTs(fname, ts)
   if ts ~= nil and type(ts) ~= 'table' then
     fail(('%s: ts must be a table or nil, got %s'):format(fname, describe(ts)))
@@ -94,7 +104,8 @@ end
 --- The unit vector along (dx, dy) (not the zero vector) and the length of (dx, dy).
 --- Scaled by the larger component first, so that neither overflow nor underflow can
 --- spoil the result; the length may be math.huge for vectors longer than that.
----@param dx number @param dy number
+---@param dx number
+---@param dy number
 ---@return number ux, number uy, number length
 function ray.unit(dx, dy)
   local m, ay = abs(dx), abs(dy)
@@ -322,7 +333,11 @@ end
 --- The hits of the ray from (x, y) along (dx, dy) (arguments valid) on shape `s`, as
 --- distances along the normalised direction, ascending: `ts` (filled from index 1, entries
 --- past n cleared; a new table when nil) and the count n (1 or 2); nil, 0 on a miss.
----@param s strike.Shape @param x number @param y number @param dx number @param dy number
+---@param s strike.Shape
+---@param x number
+---@param y number
+---@param dx number
+---@param dy number
 ---@param ts number[]|nil
 ---@return number[]|nil ts, integer n
 function ray.intersections(s, x, y, dx, dy, ts)
@@ -331,7 +346,11 @@ function ray.intersections(s, x, y, dx, dy, ts)
 end
 
 --- True when the ray hits the shape (arguments valid). Allocates nothing.
----@param s strike.Shape @param x number @param y number @param dx number @param dy number
+---@param s strike.Shape
+---@param x number
+---@param y number
+---@param dx number
+---@param dy number
 ---@return boolean
 function ray.intersects(s, x, y, dx, dy)
   local ux, uy = unit(dx, dy)
@@ -344,7 +363,11 @@ end
 --- face; the leaving one for a ray starting inside). Circles: (hit - centre) / r.
 --- Edges: the side facing the ray's origin; for a collinear ray, the segment's direction
 --- at that end (-u at the near end, +u at the far end for a ray starting on the segment).
----@param s strike.Shape @param ox number @param oy number @param ux number @param uy number
+---@param s strike.Shape
+---@param ox number
+---@param oy number
+---@param ux number
+---@param uy number
 ---@param maxDistance number
 ---@return number|nil distance, number x, number y, number nx, number ny
 function ray.cast(s, ox, oy, ux, uy, maxDistance)
@@ -359,7 +382,11 @@ end
 local cast = ray.cast
 
 --- rayCast on one shape (arguments valid): see ray.cast; (dx, dy) need not be a unit vector.
----@param s strike.Shape @param x number @param y number @param dx number @param dy number
+---@param s strike.Shape
+---@param x number
+---@param y number
+---@param dx number
+---@param dy number
 ---@param maxDistance number
 ---@return number|nil distance, number x, number y, number nx, number ny
 function ray.rayCast(s, x, y, dx, dy, maxDistance)
@@ -382,7 +409,11 @@ end
 --- segmentCast on one shape (arguments valid): the first hit of the segment from
 --- (x1, y1) to (x2, y2), as ray.cast with the segment's length as maxDistance; nil when
 --- p1 == p2.
----@param s strike.Shape @param x1 number @param y1 number @param x2 number @param y2 number
+---@param s strike.Shape
+---@param x1 number
+---@param y1 number
+---@param x2 number
+---@param y2 number
 ---@return number|nil distance, number x, number y, number nx, number ny
 function ray.segmentCast(s, x1, y1, x2, y2)
   local ux, uy, l = segmentRay(x1, y1, x2, y2)
@@ -394,7 +425,11 @@ end
 
 --- The hits on every leaf that is hit: a new table { [shape] = { t1, t2 } } (or { t1 }),
 --- or nil when no leaf is hit. Arguments valid.
----@param leaves strike.Shape[] @param n integer @param x number @param y number @param dx number
+---@param leaves strike.Shape[]
+---@param n integer
+---@param x number
+---@param y number
+---@param dx number
 ---@param dy number
 ---@return table|nil
 function ray.leavesIntersections(leaves, n, x, y, dx, dy)
@@ -412,7 +447,11 @@ function ray.leavesIntersections(leaves, n, x, y, dx, dy)
 end
 
 --- True when the ray hits some leaf. Arguments valid; allocates nothing.
----@param leaves strike.Shape[] @param n integer @param x number @param y number @param dx number
+---@param leaves strike.Shape[]
+---@param n integer
+---@param x number
+---@param y number
+---@param dx number
 ---@param dy number
 ---@return boolean
 function ray.leavesIntersect(leaves, n, x, y, dx, dy)
@@ -441,8 +480,13 @@ end
 
 --- rayCast over a leaf list (arguments valid): distance, hit point, normal and the leaf
 --- hit first (ties: the first leaf in order), or nil.
----@param leaves strike.Shape[] @param n integer @param x number @param y number @param dx number
----@param dy number @param maxDistance number
+---@param leaves strike.Shape[]
+---@param n integer
+---@param x number
+---@param y number
+---@param dx number
+---@param dy number
+---@param maxDistance number
 ---@return number|nil distance, number x, number y, number nx, number ny, strike.Shape shape
 function ray.leavesRayCast(leaves, n, x, y, dx, dy, maxDistance)
   local ux, uy = unit(dx, dy)
@@ -450,7 +494,11 @@ function ray.leavesRayCast(leaves, n, x, y, dx, dy, maxDistance)
 end
 
 --- segmentCast over a leaf list (arguments valid); nil when p1 == p2.
----@param leaves strike.Shape[] @param n integer @param x1 number @param y1 number @param x2 number
+---@param leaves strike.Shape[]
+---@param n integer
+---@param x1 number
+---@param y1 number
+---@param x2 number
 ---@param y2 number
 ---@return number|nil distance, number x, number y, number nx, number ny, strike.Shape shape
 function ray.leavesSegmentCast(leaves, n, x1, y1, x2, y2)

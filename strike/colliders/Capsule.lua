@@ -15,7 +15,11 @@ Capsule.name = 'Capsule'
 --- (dy >= dx; the caps have radius dx / 2), turned by `angle`. Unrotated, the caps sit
 --- on the vertical axis. Children: the two cap circles (-y end first), then the
 --- rectangle between them (none when dy == dx: the capsule is then one circle).
----@param x number @param y number @param dx number @param dy number @param angle number|nil
+---@param x number
+---@param y number
+---@param dx number
+---@param dy number
+---@param angle number|nil
 function Capsule:new(x, y, dx, dy, angle)
   check.number(x, 'strike.Capsule', 'x')
   check.number(y, 'strike.Capsule', 'y')

@@ -93,7 +93,8 @@ end
 
 --- Remove the children at the given indices (numbered as before the call) and return them,
 --- in the order asked. Each removed child is free to be added elsewhere.
----@param index integer @param ... integer
+---@param index integer
+---@param ... integer
 ---@return strike.Shape|strike.Collider ...
 function Collider:remove(index, ...)
   local shapes = self.shapes or {}
@@ -340,7 +341,8 @@ function Collider:ipairs()
 end
 
 --- Minimum and maximum of the projection of every leaf on the unit vector (nx, ny).
----@param nx number @param ny number
+---@param nx number
+---@param ny number
 ---@return number min, number max
 function Collider:project(nx, ny)
   number(nx, 'strike.Collider:project', 'nx')
@@ -357,7 +359,8 @@ function Collider:project(nx, ny)
 end
 
 --- True when the point is strictly inside some leaf. Takes x, y or {x = , y = }.
----@param x number|table @param y number|nil
+---@param x number|table
+---@param y number|nil
 ---@return boolean
 function Collider:containsPoint(x, y)
   x, y = Shape._point(x, y, 'strike.Collider:containsPoint')
@@ -415,7 +418,8 @@ local function addAngle(self, a)
 end
 
 --- Move every shape by (dx, dy).
----@param dx number @param dy number
+---@param dx number
+---@param dy number
 ---@return self
 function Collider:translate(dx, dy)
   number(dx, 'strike.Collider:translate', 'dx')
@@ -425,7 +429,8 @@ function Collider:translate(dx, dy)
 end
 
 --- Move so that the centroid is at (x, y).
----@param x number @param y number
+---@param x number
+---@param y number
 ---@return self
 function Collider:translateTo(x, y)
   number(x, 'strike.Collider:translateTo', 'x')
@@ -436,7 +441,9 @@ function Collider:translateTo(x, y)
 end
 
 --- Rotate by `angle` radians about (refx, refy), by default the centroid.
----@param angle number @param refx number|nil @param refy number|nil
+---@param angle number
+---@param refx number|nil
+---@param refy number|nil
 ---@return self
 function Collider:rotate(angle, refx, refy)
   number(angle, 'strike.Collider:rotate', 'angle')
@@ -448,7 +455,9 @@ function Collider:rotate(angle, refx, refy)
 end
 
 --- Rotate to the absolute `angle` about (refx, refy), by default the centroid.
----@param angle number @param refx number|nil @param refy number|nil
+---@param angle number
+---@param refx number|nil
+---@param refy number|nil
 ---@return self
 function Collider:rotateTo(angle, refx, refy)
   number(angle, 'strike.Collider:rotateTo', 'angle')
@@ -461,7 +470,9 @@ function Collider:rotateTo(angle, refx, refy)
 end
 
 --- Scale by `sf` (> 0) about (refx, refy), by default the centroid. Calls compose.
----@param sf number @param refx number|nil @param refy number|nil
+---@param sf number
+---@param refx number|nil
+---@param refy number|nil
 ---@return self
 function Collider:scale(sf, refx, refy)
   positive(sf, 'strike.Collider:scale', 'factor')
@@ -475,7 +486,9 @@ end
 --- then, if given, moved so its centroid is at (x, y) and rotated to `angle`. strike's own
 --- data is duplicated; the values of your own fields (an `entity`, say) are shared by
 --- reference, not copied. The copy belongs to no collider.
----@param x number|nil @param y number|nil @param angle number|nil
+---@param x number|nil
+---@param y number|nil
+---@param angle number|nil
 ---@return strike.Collider
 function Collider:copy(x, y, angle)
   local c = setmetatable({}, getmetatable(self))
@@ -548,7 +561,10 @@ local leavesIntersections, leavesIntersect, leavesRayCast, leavesSegmentCast = r
 --- The hits of the ray from (x, y) along (dx, dy) on every leaf shape it hits: a new table
 --- `{ [shape] = { t1, t2 } }` (`{ t1 }` for a single hit), each list as
 --- shape:rayIntersections gives it; nil when no leaf is hit.
----@param x number @param y number @param dx number @param dy number
+---@param x number
+---@param y number
+---@param dx number
+---@param dy number
 ---@return table<strike.Shape, number[]>|nil
 function Collider:rayIntersections(x, y, dx, dy)
   checkRay('strike.Collider:rayIntersections', x, y, dx, dy)
@@ -557,7 +573,10 @@ function Collider:rayIntersections(x, y, dx, dy)
 end
 
 --- True when the ray from (x, y) along (dx, dy) hits some leaf shape. Allocates nothing.
----@param x number @param y number @param dx number @param dy number
+---@param x number
+---@param y number
+---@param dx number
+---@param dy number
 ---@return boolean
 function Collider:rayIntersects(x, y, dx, dy)
   checkRay('strike.Collider:rayIntersects', x, y, dx, dy)
@@ -569,7 +588,11 @@ end
 --- distance of at most maxDistance (default math.huge): distance, hit point, outward unit
 --- normal and the leaf shape hit (on ties, the first in elems() order); nil when none.
 --- Allocates nothing.
----@param x number @param y number @param dx number @param dy number @param maxDistance number|nil
+---@param x number
+---@param y number
+---@param dx number
+---@param dy number
+---@param maxDistance number|nil
 ---@return number|nil distance, number x, number y, number nx, number ny, strike.Shape shape
 function Collider:rayCast(x, y, dx, dy, maxDistance)
   checkRay('strike.Collider:rayCast', x, y, dx, dy)
@@ -580,7 +603,10 @@ end
 
 --- rayCast along the segment from (x1, y1) to (x2, y2): distance from (x1, y1), hit point,
 --- normal and leaf shape of the first hit; nil when there is none or p1 == p2.
----@param x1 number @param y1 number @param x2 number @param y2 number
+---@param x1 number
+---@param y1 number
+---@param x2 number
+---@param y2 number
 ---@return number|nil distance, number x, number y, number nx, number ny, strike.Shape shape
 function Collider:segmentCast(x1, y1, x2, y2)
   checkSegment('strike.Collider:segmentCast', x1, y1, x2, y2)

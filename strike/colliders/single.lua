@@ -6,7 +6,8 @@ local Collider = require(ROOT .. '.colliders.Collider')
 local check = require(ROOT .. '.check')
 
 --- Make the single-shape collider class for the shape registered as `name`.
----@param shapes table the S.hapes registry @param name string
+---@param shapes table the S.hapes registry
+---@param name string
 ---@return table
 return function(shapes, name)
   local Single = Collider:extend()

@@ -18,7 +18,9 @@ end
 
 --- Hull of the points (xs[i], ys[i]), i = 1..n, in positive winding (positive shoelace
 --- area), without duplicate or collinear vertices.
----@param xs number[] @param ys number[] @param n integer
+---@param xs number[]
+---@param ys number[]
+---@param n integer
 ---@return number[] hx, number[] hy, integer count, integer distinct number of distinct input points
 function hull.build(xs, ys, n)
   local idx = {}
@@ -63,7 +65,11 @@ end
 
 --- True when (x, y) lies strictly inside the convex polygon hx, hy (count h, positive
 --- winding), farther than the collinearity tolerance from every edge.
----@param hx number[] @param hy number[] @param h integer @param x number @param y number
+---@param hx number[]
+---@param hy number[]
+---@param h integer
+---@param x number
+---@param y number
 ---@return boolean
 function hull.strictlyInside(hx, hy, h, x, y)
   for i = 1, h do
@@ -77,7 +83,11 @@ function hull.strictlyInside(hx, hy, h, x, y)
 end
 
 --- Rotate the hull in place so that it starts at the vertex equal to (x, y), if any.
----@param hx number[] @param hy number[] @param h integer @param x number @param y number
+---@param hx number[]
+---@param hy number[]
+---@param h integer
+---@param x number
+---@param y number
 function hull.startAt(hx, hy, h, x, y)
   local s
   for i = 1, h do

@@ -3,7 +3,9 @@ local polygon = {}
 
 --- Signed area (shoelace: positive for positive winding) and area centroid of the polygon
 --- xs, ys (count n). Coordinates are taken relative to the first vertex to limit round-off.
----@param xs number[] @param ys number[] @param n integer
+---@param xs number[]
+---@param ys number[]
+---@param n integer
 ---@return number area, number cx, number cy
 function polygon.areaCentroid(xs, ys, n)
   local ox, oy = xs[1], ys[1]

@@ -19,7 +19,10 @@ Circle.name = 'Circle'
 
 --- A circle centred on (x, y) with radius r (> 0), turned by `angle` (default 0; the angle
 --- only matters to getAngle and to drawing).
----@param x number @param y number @param r number @param angle number|nil
+---@param x number
+---@param y number
+---@param r number
+---@param angle number|nil
 function Circle:new(x, y, r, angle)
   number(x, 'strike.Circle', 'x')
   number(y, 'strike.Circle', 'y')
@@ -46,7 +49,8 @@ end
 function Circle:getRadius() return self._r * self._scale end
 
 --- Minimum and maximum of the projection on the unit vector (nx, ny).
----@param nx number @param ny number
+---@param nx number
+---@param ny number
 ---@return number min, number max
 function Circle:project(nx, ny)
   number(nx, 'strike.Shape:project', 'nx')
@@ -57,7 +61,8 @@ function Circle:project(nx, ny)
 end
 
 --- True when the point is strictly inside (not on the circle itself). Takes x, y or {x=, y=}.
----@param x number|table @param y number|nil
+---@param x number|table
+---@param y number|nil
 ---@return boolean
 function Circle:containsPoint(x, y)
   x, y = Shape._point(x, y, 'strike.Shape:containsPoint')
@@ -87,7 +92,8 @@ function Circle:getVertices(out)
 end
 
 --- The point on the circle farthest along (nx, ny).
----@param nx number @param ny number
+---@param nx number
+---@param ny number
 ---@return number x, number y
 function Circle:getSupport(nx, ny)
   local r = self._r * self._scale

@@ -11,7 +11,10 @@ local Edge = VertexShape:extend()
 Edge.name = 'Edge'
 
 --- A segment from (x1, y1) to (x2, y2); the endpoints must differ.
----@param x1 number @param y1 number @param x2 number @param y2 number
+---@param x1 number
+---@param y1 number
+---@param x2 number
+---@param y2 number
 function Edge:new(x1, y1, x2, y2)
   number(x1, 'strike.Edge', 'x1')
   number(y1, 'strike.Edge', 'y1')

@@ -12,7 +12,12 @@ Ellipse.name = 'Ellipse'
 --- An ellipse centred on (x, y) with semi-axes a (along x) and b (along y), approximated by
 --- an inscribed polygon of n segments (3 <= n <= 4096; default max(8, 4 * floor(a / b)),
 --- at most 64), turned by `angle`.
----@param x number @param y number @param a number @param b number @param n integer|nil @param angle number|nil
+---@param x number
+---@param y number
+---@param a number
+---@param b number
+---@param n integer|nil
+---@param angle number|nil
 function Ellipse:new(x, y, a, b, n, angle)
   check.number(x, 'strike.Ellipse', 'x')
   check.number(y, 'strike.Ellipse', 'y')

@@ -10,7 +10,8 @@ local Point = Circle:extend()
 Point.name = 'Point'
 
 --- A point at (x, y).
----@param x number @param y number
+---@param x number
+---@param y number
 function Point:new(x, y)
   check.number(x, 'strike.Point', 'x')
   check.number(y, 'strike.Point', 'y')

@@ -9,7 +9,11 @@ Rectangle.name = 'Rectangle'
 
 --- A dx-by-dy rectangle (dy defaults to dx) centred on (x, y), turned by `angle` radians.
 --- Unrotated, edge 1 is the min-y side (normal (0, -1)), then +x, max-y and -x.
----@param x number @param y number @param dx number @param dy number|nil @param angle number|nil
+---@param x number
+---@param y number
+---@param dx number
+---@param dy number|nil
+---@param angle number|nil
 function Rectangle:new(x, y, dx, dy, angle)
   check.number(x, 'strike.Rectangle', 'x')
   check.number(y, 'strike.Rectangle', 'y')

@@ -12,7 +12,11 @@ RegularPolygon.name = 'RegularPolygon'
 --- An n-sided regular polygon (3 <= n <= 4096) centred on (x, y) with circumradius
 --- `radius`, turned by `angle`. Unrotated, vertex n sits at (x, y + radius), as in the
 --- original Strike (so n = 4 gives a diamond).
----@param x number @param y number @param n integer @param radius number @param angle number|nil
+---@param x number
+---@param y number
+---@param n integer
+---@param radius number
+---@param angle number|nil
 function RegularPolygon:new(x, y, n, radius, angle)
   check.number(x, 'strike.RegularPolygon', 'x')
   check.number(y, 'strike.RegularPolygon', 'y')
