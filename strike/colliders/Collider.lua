@@ -2,16 +2,34 @@
 --- collide with each other. Area, centroid, radius and bounds are aggregates of the leaf
 --- shapes, cached and recomputed on the next query after anything in the tree changes.
 ---
---- Cache protocol, three flags, each recomputed lazily and bottom-up:
----   `_leavesOK`  the flat leaf list (cleared by add, remove, consolidate), with `_single`:
----                its only leaf when it has exactly one, else false (S.triking's fast path);
----   `_massOK`    area and centroid (cleared also when any leaf moves);
----   `_clean`     bounds and radius (cleared also when any leaf moves).
---- For each flag: when a collider's flag is false, so is every enclosing collider's (the
---- refresh of a collider refreshes its nested colliders first). So a change walks up only
---- until it meets a collider already marked. Transforms of a collider need only the leaf
---- list, so moving a collider every frame costs one world-vertex refresh per leaf, at the
---- next query.
+--- The cache protocol (shapes and colliders). Every cached value has one flag; whoever
+--- changes what it depends on clears the flag, and the next reader refreshes it.
+---
+---   flag (owner)          guards                        cleared by                   refreshed by
+---   `_dirty` (shape)      its world data (layout.lua:   Shape:_touch: every          the kind's _refresh, called by
+---                         bounds, radius, vertex        transform of the shape,      every reader first (getters,
+---                         records)                      and Shape:_place, a          narrow phase, rays, contacts,
+---                                                       collider moving it           collide/compound.lua)
+---   `_pose` (shape)       a stamp, not a flag: a new    the same                     (read by S.ite against the
+---                         number on every move                                       MTV's `_poseA`, `_poseB`)
+---   `_leavesOK`           the flat leaf list `_leaves`, invalidate(): add, remove,   refreshLeaves (via _leafList,
+---     (collider)          `_leafPos`, `_nleaves`, and   consolidate                  elems, getShapeCount, the
+---                         `_single` (the only leaf or                                transforms, rays, project,
+---                         false; S.triking's fast path)                              containsPoint, refreshMass)
+---   `_massOK`             area and centroid             invalidate(), and            refreshMass (getArea,
+---     (collider)                                        Shape:_touch of any leaf     getCentroid, getAreaCentroid)
+---                                                       below it
+---   `_clean` (collider)   bounds and radius             the same as `_massOK`        refresh (getBbox, getBounds,
+---                                                                                    getRadius, calcAreaCentroid)
+---
+--- Invariant: when a collider's flag is false, so is that flag on every enclosing collider.
+--- Clearing keeps it by walking up from the change to the root, and may stop at the first
+--- collider whose flags are already false (everything above it is false too). Refreshing
+--- keeps it by working bottom-up: a collider refreshes its stale nested colliders first,
+--- and refreshing an inner collider alone leaves the outer ones stale, which is allowed.
+--- Transforms of a collider need only the leaf list, so moving a collider every frame
+--- costs one world-data refresh per leaf, at the next query. spec/cache_spec.lua checks
+--- every query on an outer collider after every change to a leaf of an inner one.
 local ROOT = (...):match('^(.-)%.colliders%.[^%.]+$')
 local Object = require(ROOT .. '.class')
 local Shape = require(ROOT .. '.base.Shape')
