@@ -21,7 +21,7 @@ local rotate = require(ROOT .. '.vec').rotate
 local MINX, MINY, MAXX, MAXY, R = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY, layout.R
 local X, Y = layout.X, layout.Y
 local STRIDE, FIRST, VY, NX, NY, D = layout.STRIDE, layout.FIRST, layout.VY, layout.NX, layout.NY, layout.D
-local base, last = layout.base, layout.last
+local BASE = layout.BASE
 
 local sqrt, huge, abs, floor = math.sqrt, math.huge, math.abs, math.floor
 local number = check.number
@@ -89,7 +89,7 @@ function VertexShape:_refresh()
     if py < miny then miny = py end
     if py > maxy then maxy = py end
     local nx, ny = rotate(l[q + 2], l[q + 3], c, s)
-    local r = base(i)
+    local r = STRIDE * i + BASE
     self[r], self[r + VY], self[r + NX], self[r + NY], self[r + D] = px, py, nx, ny, nx * px + ny * py
   end
   self[MINX], self[MINY], self[MAXX], self[MAXY] = minx, miny, maxx, maxy
@@ -112,7 +112,7 @@ function VertexShape:getVertexCount() return self._n end
 function VertexShape:getVertex(i)
   if not inRange(i, self._n) then return nil end
   if self._dirty then self:_refresh() end
-  local k = base(i)
+  local k = STRIDE * i + BASE
   return self[k], self[k + VY]
 end
 
@@ -124,7 +124,7 @@ function VertexShape:getEdge(i)
   local n = self._n
   if not inRange(i, n) then return nil end
   if self._dirty then self:_refresh() end
-  local k, l = base(i), base(i < n and i + 1 or 1)
+  local k, l = STRIDE * i + BASE, STRIDE * (i < n and i + 1 or 1) + BASE
   return self[k], self[k + VY], self[l], self[l + VY]
 end
 
@@ -134,7 +134,7 @@ end
 function VertexShape:getNormal(i)
   if not inRange(i, self._n) then return nil end
   if self._dirty then self:_refresh() end
-  local k = base(i)
+  local k = STRIDE * i + BASE
   return self[k + NX], self[k + NY]
 end
 
@@ -147,7 +147,7 @@ function VertexShape:getVertices(out)
   out = out or {}
   local n = self._n
   for i = 1, n do
-    local k = base(i)
+    local k = STRIDE * i + BASE
     out[2 * i - 1], out[2 * i] = self[k], self[k + VY]
   end
   for i = #out, 2 * n + 1, -1 do out[i] = nil end
@@ -163,7 +163,7 @@ function VertexShape:project(nx, ny)
   number(ny, 'strike.Shape:project', 'ny')
   if self._dirty then self:_refresh() end
   local lo, hi = huge, -huge
-  for k = FIRST, last(self._n), STRIDE do
+  for k = FIRST, STRIDE * self._n + BASE, STRIDE do
     local d = self[k] * nx + self[k + VY] * ny
     if d < lo then lo = d end
     if d > hi then hi = d end
@@ -179,7 +179,7 @@ function VertexShape:getSupport(nx, ny)
   if self._dirty then self:_refresh() end
   local best, bi = -huge, 1
   for i = 1, self._n do
-    local k = base(i)
+    local k = STRIDE * i + BASE
     local d = self[k] * nx + self[k + VY] * ny
     if d > best then best, bi = d, i end
   end
@@ -195,7 +195,7 @@ function VertexShape:containsPoint(x, y)
   x, y = Shape._point(x, y, 'strike.Shape:containsPoint')
   if self._dirty then self:_refresh() end
   if self._n < 3 then return false end
-  for k = FIRST, last(self._n), STRIDE do
+  for k = FIRST, STRIDE * self._n + BASE, STRIDE do
     if (x - self[k]) * self[k + NX] + (y - self[k + VY]) * self[k + NY] >= 0 then return false end
   end
   return true
@@ -206,7 +206,7 @@ local function edgeIter(self, i)
   i = i + 1
   local n = self._n
   if i > n then return nil end
-  local k, l = base(i), base(i < n and i + 1 or 1)
+  local k, l = STRIDE * i + BASE, STRIDE * (i < n and i + 1 or 1) + BASE
   return i, self[k], self[k + VY], self[l], self[l + VY]
 end
 
@@ -223,7 +223,7 @@ local function vecIter(self, i)
   i = i + 1
   local n = self._n
   if i > n then return nil end
-  local k, l = base(i), base(i < n and i + 1 or 1)
+  local k, l = STRIDE * i + BASE, STRIDE * (i < n and i + 1 or 1) + BASE
   return i, self[l] - self[k], self[l + VY] - self[k + VY]
 end
 
@@ -241,7 +241,7 @@ end
 function VertexShape:_farthest(px, py)
   if self._dirty then self:_refresh() end
   local best = 0
-  for k = FIRST, last(self._n), STRIDE do
+  for k = FIRST, STRIDE * self._n + BASE, STRIDE do
     local dx, dy = self[k] - px, self[k + VY] - py
     local d = dx * dx + dy * dy
     if d > best then best = d end

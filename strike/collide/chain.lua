@@ -36,7 +36,7 @@ local result, polygonPolygon, polygonCircle = sat.result, sat.polygonPolygon, sa
 local huge = math.huge
 local X, Y, R = layout.X, layout.Y, layout.R
 local STRIDE, FIRST, VY, NX, NY = layout.STRIDE, layout.FIRST, layout.VY, layout.NX, layout.NY
-local last = layout.last
+local BASE = layout.BASE
 -- A segment's p1 (with face 1's normal n, the segment's own) and p2 records.
 local P1, P2 = layout.base(1), layout.base(2)
 
@@ -69,7 +69,7 @@ chain.admissible = admissible
 -- of the push along n.
 local function polygonVerdict(S, P, mx, my)
   local nx, ny, x1, y1 = S[P1 + NX], S[P1 + NY], S[P1], S[P1 + VY]
-  local lastP = last(P._n)
+  local lastP = STRIDE * P._n + BASE
   local sepN = huge
   for r = FIRST, lastP, STRIDE do
     local s = nx * (P[r] - x1) + ny * (P[r + VY] - y1)

@@ -31,7 +31,7 @@ local contact = {}
 local sqrt, huge = math.sqrt, math.huge
 local X, Y, R = layout.X, layout.Y, layout.R
 local VY, NX, NY = layout.VY, layout.NX, layout.NY
-local base = layout.base
+local STRIDE, BASE = layout.STRIDE, layout.BASE
 
 -- Write point k of `out`, reusing its table (a second point's table is kept in
 -- out._spare while the manifold has one point, so that #out is always the count).
@@ -46,7 +46,7 @@ end
 local function alignedFace(P, nx, ny)
   local best, bi = -huge, 1
   for i = 1, P._n do
-    local k = base(i)
+    local k = STRIDE * i + BASE
     local d = P[k + NX] * nx + P[k + NY] * ny
     if d > best then best, bi = d, i end
   end
@@ -70,13 +70,13 @@ end
 -- Clip and keep, with Ref the reference polygon (face r) and I the incident one (face f).
 -- Returns the number of points written. `side` is 0 or 1 (see the header).
 local function clipFaces(out, Ref, r, I, f, side)
-  local rk, rl = base(r), base(r < Ref._n and r + 1 or 1)
+  local rk, rl = STRIDE * r + BASE, STRIDE * (r < Ref._n and r + 1 or 1) + BASE
   local v1x, v1y, v2x, v2y = Ref[rk], Ref[rk + VY], Ref[rl], Ref[rl + VY]
   local nx, ny = Ref[rk + NX], Ref[rk + NY]
   local tx, ty = v2x - v1x, v2y - v1y
   local len = sqrt(tx * tx + ty * ty)
   tx, ty = tx / len, ty / len
-  local ik, il = base(f), base(f < I._n and f + 1 or 1)
+  local ik, il = STRIDE * f + BASE, STRIDE * (f < I._n and f + 1 or 1) + BASE
   local ax, ay, bx, by = I[ik], I[ik + VY], I[il], I[il + VY]
   local ca, cb = 0, 1 -- which corner each end is (see the header)
   -- side plane 1: dot(t, p - v1) >= 0
@@ -109,12 +109,12 @@ local function circleFeature(P, cx, cy)
   local n = P._n
   local best, bi = -huge, 1
   for i = 1, n do
-    local k = base(i)
+    local k = STRIDE * i + BASE
     local s = P[k + NX] * (cx - P[k]) + P[k + NY] * (cy - P[k + VY])
     if s > best then best, bi = s, i end
   end
   local j = bi < n and bi + 1 or 1
-  local k, l = base(bi), base(j)
+  local k, l = STRIDE * bi + BASE, STRIDE * j + BASE
   local x1, y1, x2, y2 = P[k], P[k + VY], P[l], P[l + VY]
   if (cx - x1) * (x2 - x1) + (cy - y1) * (y2 - y1) <= 0 then return 2 * bi + 1 end
   if (cx - x2) * (x1 - x2) + (cy - y2) * (y1 - y2) <= 0 then return 2 * j + 1 end
@@ -133,19 +133,19 @@ end
 function contact.polygons(A, B, nx, ny, depth, edge, out)
   local k
   if edge > 0 then
-    local k0 = base(edge)
+    local k0 = STRIDE * edge + BASE
     k = clipFaces(out, A, edge, B, (alignedFace(B, -A[k0 + NX], -A[k0 + NY])), 0)
   elseif edge < 0 then
-    local k0 = base(-edge)
+    local k0 = STRIDE * (-edge) + BASE
     k = clipFaces(out, B, -edge, A, (alignedFace(A, -B[k0 + NX], -B[k0 + NY])), 1)
   else -- (an MTV made by hand: look the reference face up)
     local fa, alignA = alignedFace(A, nx, ny)
     local fb, alignB = alignedFace(B, -nx, -ny)
     if alignB > alignA + 1e-6 then
-      local k0 = base(fb)
+      local k0 = STRIDE * fb + BASE
       k = clipFaces(out, B, fb, A, (alignedFace(A, -B[k0 + NX], -B[k0 + NY])), 1)
     else
-      local k0 = base(fa)
+      local k0 = STRIDE * fa + BASE
       k = clipFaces(out, A, fa, B, (alignedFace(B, -A[k0 + NX], -A[k0 + NY])), 0)
     end
   end
@@ -153,11 +153,11 @@ function contact.polygons(A, B, nx, ny, depth, edge, out)
     -- Round-off left nothing behind the face: report the deepest vertex of B.
     local best, bj = huge, 1
     for j = 1, B._n do
-      local q = base(j)
+      local q = STRIDE * j + BASE
       local p = nx * B[q] + ny * B[q + VY]
       if p < best then best, bj = p, j end
     end
-    local q = base(bj)
+    local q = STRIDE * bj + BASE
     setPoint(out, 1, B[q] + nx * depth / 2, B[q + VY] + ny * depth / 2, depth, bj)
     k = 1
   end

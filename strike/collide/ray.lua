@@ -36,6 +36,7 @@ local kinds = require(ROOT .. '.collide.dispatch').kind
 
 local X, Y, R = layout.X, layout.Y, layout.R
 local STRIDE, FIRST, VY, NX, NY, D = layout.STRIDE, layout.FIRST, layout.VY, layout.NX, layout.NY, layout.D
+local BASE = layout.BASE
 local P1, P2 = layout.base(1), layout.base(2)
 
 local sqrt, abs, huge = math.sqrt, math.abs, math.huge
@@ -135,7 +136,7 @@ local unit = ray.unit
 local function polygonClip(s, ox, oy, ux, uy)
   if s._dirty then s:_refresh() end
   local tin, tout, fin, fout = -huge, huge, 0, 0
-  for k = FIRST, layout.last(s._n), STRIDE do
+  for k = FIRST, STRIDE * s._n + BASE, STRIDE do
     local nx, ny = s[k + NX], s[k + NY]
     local den = nx * ux + ny * uy
     local num = s[k + D] - (nx * ox + ny * oy)

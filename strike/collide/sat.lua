@@ -28,7 +28,7 @@ local sqrt, huge, abs = math.sqrt, math.huge, math.abs
 local X, Y, R = layout.X, layout.Y, layout.R
 local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
 local STRIDE, FIRST, VY, NX, NY, D = layout.STRIDE, layout.FIRST, layout.VY, layout.NX, layout.NY, layout.D
-local base, last = layout.base, layout.last
+local BASE = layout.BASE
 
 local sat = {}
 
@@ -63,12 +63,12 @@ sat.result = result
 -- the new maximum, so each of them gets a full scan instead.
 local function maxSeparationWalk(A, B)
   local na = A._n
-  local lastB = last(B._n)
+  local lastB = STRIDE * B._n + BASE
   local best, bi = -huge, 1
   local j, pj -- B's support record (its slot) and its projection
   local first = na == 2 and 2 or 1 -- faces scanned in full
   for i = 1, first do
-    local k = base(i)
+    local k = STRIDE * i + BASE
     local nx, ny = A[k + NX], A[k + NY]
     j, pj = FIRST, nx * B[FIRST] + ny * B[FIRST + VY]
     for r = FIRST + STRIDE, lastB, STRIDE do
@@ -82,7 +82,7 @@ local function maxSeparationWalk(A, B)
     end
   end
   for i = first + 1, na do
-    local k = base(i)
+    local k = STRIDE * i + BASE
     local nx, ny = A[k + NX], A[k + NY]
     pj = nx * B[j] + ny * B[j + VY]
     while true do
@@ -109,7 +109,7 @@ end
 local min, max = math.min, math.max
 local function maxSeparationScan(A, B)
   local na = A._n
-  local lastB = last(B._n)
+  local lastB = STRIDE * B._n + BASE
   local best, bi = -huge, 1
   local h = A._half
   if h > 0 then
@@ -119,7 +119,7 @@ local function maxSeparationScan(A, B)
     -- something separates, the lowest separating face (face i < h + 1 <= any face i + h).
     local sepI, sepS = 0, 0 -- the first separating face of the second half, if any
     for i = 1, h do
-      local k = base(i)
+      local k = STRIDE * i + BASE
       local nx, ny = A[k + NX], A[k + NY]
       local lo, hi = huge, -huge
       for r = FIRST, lastB, STRIDE do
@@ -130,7 +130,7 @@ local function maxSeparationScan(A, B)
       if s >= 0 then return s, i end
       if s > best or (s == best and i < bi) then best, bi = s, i end
       local f = i + h
-      s = -hi - A[base(f) + D]
+      s = -hi - A[STRIDE * f + BASE + D]
       if s >= 0 then
         if sepI == 0 then sepI, sepS = f, s end
       elseif s > best or (s == best and f < bi) then
@@ -141,7 +141,7 @@ local function maxSeparationScan(A, B)
     return best, bi
   end
   for i = 1, na do
-    local k = base(i)
+    local k = STRIDE * i + BASE
     local nx, ny = A[k + NX], A[k + NY]
     local s = huge
     for r = FIRST, lastB, STRIDE do
@@ -183,11 +183,11 @@ function sat.polygonPolygon(A, B, out)
   if A._dirty then A:_refresh() end
   if B._dirty then B:_refresh() end
   local sA, iA = maxSeparation(A, B)
-  local k = base(iA)
+  local k = STRIDE * iA + BASE
   if sA >= 0 then return result(out, A, B, A[k + NX], A[k + NY], -sA, iA) end
   local sB, iB = maxSeparation(B, A)
   if sB > sA and (sB >= 0 or sB - sA > HYSTERESIS * roundScale(A)) then
-    k = base(iB)
+    k = STRIDE * iB + BASE
     return result(out, A, B, -B[k + NX], -B[k + NY], -sB, -iB)
   end
   return result(out, A, B, A[k + NX], A[k + NY], -sA, iA)
@@ -201,19 +201,19 @@ local function polygonCircle(P, C, out, flip)
   local n = P._n
   local best, bi = -huge, 1
   for i = 1, n do
-    local k = base(i)
+    local k = STRIDE * i + BASE
     local s = P[k + NX] * (cx - P[k]) + P[k + NY] * (cy - P[k + VY])
     if s > best then
       best, bi = s, i
       if s >= r then break end
     end
   end
-  local k = base(bi)
+  local k = STRIDE * bi + BASE
   local nx, ny, depth, edge = P[k + NX], P[k + NY], r - best, bi
   if (best > 0 or n == 2) and best < r then
     -- the centre is outside face bi (or, for an edge, anywhere on its line): the closest
     -- feature is the face or one of its ends
-    local l = base(bi < n and bi + 1 or 1)
+    local l = STRIDE * (bi < n and bi + 1 or 1) + BASE
     local x1, y1, x2, y2 = P[k], P[k + VY], P[l], P[l + VY]
     local vx, vy
     if (cx - x1) * (x2 - x1) + (cy - y1) * (y2 - y1) <= 0 then
