@@ -18,7 +18,7 @@ local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
 
 local describe, fail = check.describe, check.fail
-local root, stamp = Shape.getRoot, compound.stamp
+local root = Shape.getRoot
 
 ---@class strike
 local S = {
@@ -82,15 +82,23 @@ end
 ---@param out strike.MTV|nil
 ---@return strike.MTV
 function S.AT(shape1, shape2, out)
-  if type(shape1) ~= 'table' or not isShape(shape1) then badShape('strike.AT', 1, shape1) end
-  if type(shape2) ~= 'table' or not isShape(shape2) then badShape('strike.AT', 2, shape2) end
+  -- (the checks of isShape and checkOut, inlined: this is the hottest entry point)
+  if type(shape1) ~= 'table' or shape1._pose == nil or not pair[shape1.kind] then badShape('strike.AT', 1, shape1) end
+  if type(shape2) ~= 'table' or shape2._pose == nil or not pair[shape2.kind] then badShape('strike.AT', 2, shape2) end
   local ops = pair[shape1.kind][shape2.kind]
   if not ops then
     fail(('strike.AT: no narrow phase for kinds %s and %s'):format(shape1.kind, shape2.kind))
   end
-  if out == nil then out = MTV() else checkOut('strike.AT', out, 3) end
+  if out == nil then
+    out = MTV()
+  elseif type(out) ~= 'table' or (out.type ~= 'mtv' and out.type ~= nil) then
+    badOut('strike.AT', out, 3)
+  end
   ops.collide(shape1, shape2, out)
-  return stamp(out, root(shape1), root(shape2))
+  out.collider = shape1.parent and root(shape1) or shape1
+  out.collided = shape2.parent and root(shape2) or shape2
+  out._poseA, out._poseB = shape1._pose, shape2._pose
+  return out
 end
 
 --- Collision between two colliders (or shapes): the deepest MTV over all pairs of their

@@ -35,13 +35,6 @@ function compound.stamp(out, r1, r2)
 end
 local stamp = compound.stamp
 
--- The only leaf of a body when it has exactly one (a bare shape is its own), else false.
-local function singleOf(body)
-  local s = body._single
-  if s == nil then return body end -- (a shape: colliders always have the field)
-  return s
-end
-
 --- The deepest MTV between the leaves of two bodies (see the header), filled into `out`
 --- when given (its contents are unspecified after false), or false.
 ---@param body1 strike.Collider|strike.Shape
@@ -49,9 +42,13 @@ end
 ---@param out strike.MTV|nil
 ---@return strike.MTV|false
 function compound.collide(body1, body2, out)
-  local r1, r2 = root(body1), root(body2)
+  local r1 = body1.parent and root(body1) or body1
+  local r2 = body2.parent and root(body2) or body2
   if r1 == r2 then return false end -- every leaf pair would share a root
-  local s1, s2 = singleOf(body1), singleOf(body2)
+  -- (each body's only leaf, when it has one: singleOf, inlined for the interpreters)
+  local s1, s2 = body1._single, body2._single
+  if s1 == nil then s1 = body1 end
+  if s2 == nil then s2 = body2 end
   if s1 and s2 then
     -- One leaf each, the common case: straight-line code (LuaJIT traces one-trip loops
     -- badly), tested into the caller's `out` when there is one.
@@ -63,7 +60,9 @@ function compound.collide(body1, body2, out)
     local m = pair[s1.kind][s2.kind].collide(s1, s2, out or tmpA)
     if not (m.depth > 0) then return false end -- luacheck: ignore 581 (NaN reads as no collision)
     if not out then out = MTV.set(MTV(), m) end
-    return stamp(out, r1, r2)
+    out.collider, out.collided = r1, r2
+    out._poseA, out._poseB = s1._pose, s2._pose
+    return out
   end
   local l1, n1, l2, n2
   if body1.type == 'collider' then l1, n1 = leafList(body1) else l1, n1 = nil, 1 end

@@ -62,35 +62,38 @@ sat.result = result
 -- An Edge's two faces point opposite ways: a half turn, after which the old support is
 -- the new maximum, so each of them gets a full scan instead.
 local function maxSeparationWalk(A, B)
+  -- (the layout's numbers as locals: an interpreter reads a local faster than an upvalue)
+  local stride, first, vy, nxOff, nyOff, dOff = STRIDE, FIRST, VY, NX, NY, D
   local na = A._n
-  local lastB = STRIDE * B._n + BASE
+  local lastB = stride * B._n + BASE
   local best, bi = -huge, 1
   local j, pj -- B's support record (its slot) and its projection
-  local first = na == 2 and 2 or 1 -- faces scanned in full
-  for i = 1, first do
-    local k = STRIDE * i + BASE
-    local nx, ny = A[k + NX], A[k + NY]
-    j, pj = FIRST, nx * B[FIRST] + ny * B[FIRST + VY]
-    for r = FIRST + STRIDE, lastB, STRIDE do
-      local p = nx * B[r] + ny * B[r + VY]
+  local full = na == 2 and 2 or 1 -- faces scanned in full
+  local k = BASE -- face i's record
+  for i = 1, full do
+    k = k + stride
+    local nx, ny = A[k + nxOff], A[k + nyOff]
+    j, pj = first, nx * B[first] + ny * B[first + vy]
+    for r = first + stride, lastB, stride do
+      local p = nx * B[r] + ny * B[r + vy]
       if p < pj then j, pj = r, p end
     end
-    local s = pj - A[k + D]
+    local s = pj - A[k + dOff]
     if s > best then
       best, bi = s, i
       if s >= 0 then return s, i end
     end
   end
-  for i = first + 1, na do
-    local k = STRIDE * i + BASE
-    local nx, ny = A[k + NX], A[k + NY]
-    pj = nx * B[j] + ny * B[j + VY]
+  for i = full + 1, na do
+    k = k + stride
+    local nx, ny = A[k + nxOff], A[k + nyOff]
+    pj = nx * B[j] + ny * B[j + vy]
     while true do
-      local r = j < lastB and j + STRIDE or FIRST
-      local p = nx * B[r] + ny * B[r + VY]
+      local r = j < lastB and j + stride or first
+      local p = nx * B[r] + ny * B[r + vy]
       if p < pj then j, pj = r, p else break end
     end
-    local s = pj - A[k + D]
+    local s = pj - A[k + dOff]
     if s > best then
       best, bi = s, i
       if s >= 0 then return s, i end
@@ -200,15 +203,17 @@ local function polygonCircle(P, C, out, flip)
   local cx, cy, r = C[X], C[Y], C[R]
   local n = P._n
   local best, bi = -huge, 1
+  local stride, yOff, nxOff, nyOff = STRIDE, VY, NX, NY -- (locals: see maxSeparationWalk)
+  local k = BASE
   for i = 1, n do
-    local k = STRIDE * i + BASE
-    local s = P[k + NX] * (cx - P[k]) + P[k + NY] * (cy - P[k + VY])
+    k = k + stride
+    local s = P[k + nxOff] * (cx - P[k]) + P[k + nyOff] * (cy - P[k + yOff])
     if s > best then
       best, bi = s, i
       if s >= r then break end
     end
   end
-  local k = STRIDE * bi + BASE
+  k = STRIDE * bi + BASE
   local nx, ny, depth, edge = P[k + NX], P[k + NY], r - best, bi
   if (best > 0 or n == 2) and best < r then
     -- the centre is outside face bi (or, for an edge, anywhere on its line): the closest
