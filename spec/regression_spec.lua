@@ -388,6 +388,12 @@ describe('bug 8: fake or wrong arguments failed deep inside instead of naming wh
     raisesAt(function() S.hove(S.MTV(1, 0)) end, 'strike.hove: the MTV\'s collided must be')
     raisesAt(function() S.ettle(col) end, 'strike.ettle: argument 1 must be an MTV, got a collider')
     raisesAt(function() S.hove('mtv') end, 'strike.hove: argument 1 must be an MTV, got string "mtv"')
+    local broken = S.AT(box, other)
+    broken.x = 0 / 0
+    raisesAt(function() S.ettle(broken) end, 'strike.ettle: the MTV\'s x and y must be finite numbers, got nan and 0')
+    broken.x, broken.y = 1, math.huge
+    raisesAt(function() S.hove(broken) end, 'strike.hove: the MTV\'s x and y must be finite numbers, got 1 and inf')
+    nearList(geometry(other), { 3, -5, 13, -5, 13, 5, 3, 5 }) -- nothing moved
     local a = H.Circle(0, 0, 1)
     S.hove(S.MTV(2, 0, nil, a)) -- S.hove needs only the collided side
     nearList({ a:getCentroid() }, { 2, 0 })

@@ -192,14 +192,24 @@ local function checkSide(fname, mtv, field)
   end
 end
 
+-- What S.ettle (both sides) and S.hove (the collided side) read besides the sides: a
+-- finite vector, so that the error names them rather than the translate they call.
+local function checkMove(fname, mtv, both)
+  if not (check.finite(mtv.x) and check.finite(mtv.y)) then
+    fail(('%s: the MTV\'s x and y must be finite numbers, got %s and %s'):format(fname, describe(mtv.x),
+      describe(mtv.y)))
+  end
+  if both then checkSide(fname, mtv, 'collider') end
+  checkSide(fname, mtv, 'collided')
+end
+
 --- Resolve a collision by moving both sides half way: mtv.collider by -mtv / 2 and
 --- mtv.collided by +mtv / 2. Does nothing for a separating MTV.
 ---@param mtv strike.MTV
 function S.ettle(mtv)
   checkMTV('strike.ettle', mtv)
   if mtv.separating then return end
-  checkSide('strike.ettle', mtv, 'collider')
-  checkSide('strike.ettle', mtv, 'collided')
+  checkMove('strike.ettle', mtv, true)
   local hx, hy = mtv.x / 2, mtv.y / 2
   mtv.collider:translate(-hx, -hy)
   mtv.collided:translate(hx, hy)
@@ -211,7 +221,7 @@ end
 function S.hove(mtv)
   checkMTV('strike.hove', mtv)
   if mtv.separating then return end
-  checkSide('strike.hove', mtv, 'collided')
+  checkMove('strike.hove', mtv, false)
   mtv.collided:translate(mtv.x, mtv.y)
 end
 
