@@ -46,6 +46,25 @@ function check.describe(v)
   return t
 end
 
+--- Like describe, but names strike's own objects (a class instance with a `type` field):
+--- "a shape", "a collider", "an MTV".
+---@param v any
+---@return string
+function check.what(v)
+  if type(v) == 'table' and getmetatable(v) ~= nil and type(v.type) == 'string' then
+    return v.type == 'mtv' and 'an MTV' or 'a ' .. v.type
+  end
+  return check.describe(v)
+end
+
+--- Raise the error for an `out` argument that is not a table or nil, or is one of strike's
+--- objects (a shape, a collider, an MTV: they have a `type` field).
+---@param fname string
+---@param out any
+function check.badOut(fname, out)
+  check.fail(('%s: out must be a table or nil, got %s'):format(fname, check.what(out)))
+end
+
 ---@param v any
 ---@return boolean
 local function finite(v)

@@ -17,7 +17,7 @@ local compound = require(ROOT .. '.collide.compound')
 local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
 
-local describe, fail = check.describe, check.fail
+local describe, what, fail = check.describe, check.what, check.fail
 local root = Shape.getRoot
 
 ---@class strike
@@ -52,8 +52,13 @@ local function badShape(fname, i, v)
       fail(('%s: argument %d must be a shape, got a collider (use S.triking for colliders)'):format(fname, i))
     end
     local mt = getmetatable(v)
-    if v._pose ~= nil and type(mt) == 'table' and mt.type == 'shape' then
+    if type(mt) == 'table' and mt.type == 'shape' then
+      -- an instance of a shape class: name what its class lacks, or say it was never built
       Shape.checkClass(mt, ('%s: argument %d (a %s)'):format(fname, i, tostring(v.name)))
+      if v._pose == nil then
+        fail(('%s: argument %d (a %s) was not built by a strike shape constructor (its new must call'
+          .. ' the parent\'s: Class.super.new(self, ...))'):format(fname, i, tostring(v.name)))
+      end
     end
   end
   fail(('%s: argument %d must be a strike shape, got %s'):format(fname, i, describe(v)))
@@ -61,13 +66,15 @@ end
 
 local function badBody(fname, i, v)
   if type(v) == 'table' and v.type == 'shape' then badShape(fname, i, v) end
+  if type(v) == 'table' and v.type == 'collider' and getmetatable(v) ~= nil and v._single == nil then
+    fail(('%s: argument %d (a %s) was not built by a strike collider constructor (its new must call the'
+      .. ' parent\'s: Class.super.new(self, ...))'):format(fname, i, tostring(v.name)))
+  end
   fail(('%s: argument %d must be a strike collider or shape, got %s'):format(fname, i, describe(v)))
 end
 
 local function badOut(fname, out, i)
-  local what = describe(out)
-  if type(out) == 'table' then what = ('a %s'):format(tostring(out.type)) end
-  fail(('%s: argument %d (out) must be a table such as S.MTV(), got %s'):format(fname, i, what))
+  fail(('%s: argument %d (out) must be a table such as S.MTV(), got %s'):format(fname, i, what(out)))
 end
 
 -- An `out` argument: nil, or a table that is not a shape or a collider.
@@ -122,9 +129,22 @@ end
 
 local scratch = MTV() -- S.ite's re-test of shapes that moved
 
+-- The fields S.ite reads from an MTV it uses as it is (a setter or a hand edit may have
+-- broken them): numbers, and an edgeIndex naming a face of its shapes (or 0).
+local function checkFace(m, a, b)
+  local e = m.edgeIndex
+  if type(m.nx) ~= 'number' or type(m.ny) ~= 'number' or type(m.depth) ~= 'number' then
+    fail('strike.ite: the MTV\'s nx, ny and depth must be numbers (an MTV from S.AT, S.triking or S.MTV)')
+  end
+  if type(e) ~= 'number' or e % 1 ~= 0 or (e > 0 and e > (a._n or 0)) or (e < 0 and -e > (b._n or 0)) then
+    fail(('strike.ite: the MTV\'s edgeIndex must be 0, i for face i of colliderShape (it has %d) or -j for'
+      .. ' face j of collidedShape (it has %d), got %s'):format(a._n or 0, b._n or 0, describe(e)))
+  end
+end
+
 local function checkMTV(fname, mtv)
   if type(mtv) ~= 'table' or type(mtv.x) ~= 'number' or type(mtv.y) ~= 'number' then
-    fail(('%s: argument 1 must be an MTV, got %s'):format(fname, describe(mtv)))
+    fail(('%s: argument 1 must be an MTV, got %s'):format(fname, what(mtv)))
   end
 end
 
@@ -141,16 +161,24 @@ end
 ---@return table|nil contacts
 function S.ite(mtv, out)
   checkMTV('strike.ite', mtv)
-  if out ~= nil and type(out) ~= 'table' then badOut('strike.ite', out, 2) end
+  if out ~= nil and (type(out) ~= 'table' or out.type ~= nil) then -- (not a shape, collider or MTV)
+    fail(('strike.ite: argument 2 (out) must be a table for the contacts (a previous result, or {}), got %s')
+      :format(what(out)))
+  end
   if mtv.separating then return nil end
   local a, b = mtv.colliderShape, mtv.collidedShape
   if type(a) ~= 'table' or not isShape(a) or type(b) ~= 'table' or not isShape(b) then
-    fail('strike.ite: the MTV must come from S.AT or S.triking (its colliderShape and collidedShape are not shapes)')
+    local field, v = 'colliderShape', a
+    if type(a) == 'table' and isShape(a) then field, v = 'collidedShape', b end
+    fail(('strike.ite: the MTV must come from S.AT or S.triking (its %s is %s, not a strike shape)')
+      :format(field, what(v)))
   end
   local ops = pair[a.kind][b.kind]
   local m = mtv
   if a._pose ~= mtv._poseA or b._pose ~= mtv._poseB then
     m = ops.collide(a, b, scratch)
+  else
+    checkFace(m, a, b)
   end
   if not (m.depth > 0) then return nil end -- luacheck: ignore 581 (NaN reads as no collision)
   if a._dirty then a:_refresh() end
@@ -163,12 +191,33 @@ function S.ite(mtv, out)
   return out
 end
 
+-- A body S.ettle or S.hove moves: the MTV's `collider` or `collided` field.
+local function checkSide(fname, mtv, field)
+  local v = mtv[field]
+  if type(v) ~= 'table' or not (isCollider(v) or isShape(v)) then
+    fail(('%s: the MTV\'s %s must be a strike collider or shape (as in an MTV from S.AT or S.triking), got %s')
+      :format(fname, field, what(v)))
+  end
+end
+
+-- What S.ettle (both sides) and S.hove (the collided side) read besides the sides: a
+-- finite vector, so that the error names them rather than the translate they call.
+local function checkMove(fname, mtv, both)
+  if not (check.finite(mtv.x) and check.finite(mtv.y)) then
+    fail(('%s: the MTV\'s x and y must be finite numbers, got %s and %s'):format(fname, describe(mtv.x),
+      describe(mtv.y)))
+  end
+  if both then checkSide(fname, mtv, 'collider') end
+  checkSide(fname, mtv, 'collided')
+end
+
 --- Resolve a collision by moving both sides half way: mtv.collider by -mtv / 2 and
 --- mtv.collided by +mtv / 2. Does nothing for a separating MTV.
 ---@param mtv strike.MTV
 function S.ettle(mtv)
   checkMTV('strike.ettle', mtv)
   if mtv.separating then return end
+  checkMove('strike.ettle', mtv, true)
   local hx, hy = mtv.x / 2, mtv.y / 2
   mtv.collider:translate(-hx, -hy)
   mtv.collided:translate(hx, hy)
@@ -180,6 +229,7 @@ end
 function S.hove(mtv)
   checkMTV('strike.hove', mtv)
   if mtv.separating then return end
+  checkMove('strike.hove', mtv, false)
   mtv.collided:translate(mtv.x, mtv.y)
 end
 
@@ -187,14 +237,18 @@ local function checkBody(fname, v, i)
   if type(v) ~= 'table' or not (isCollider(v) or isShape(v)) then badBody(fname, i, v) end
 end
 
+-- A collider without leaves: its box and circle are placeholders at (0, 0), not a place.
+local function empty(v) return v._single == false and v:getShapeCount() == 0 end
+
 --- Bounding-circle test (centroid and radius) for colliders or shapes: true when the
---- circles overlap (touching is not overlapping).
+--- circles overlap (touching is not overlapping). An empty collider overlaps nothing.
 ---@param a strike.Collider|strike.Shape
 ---@param b strike.Collider|strike.Shape
 ---@return boolean
 function S.ircle(a, b)
   checkBody('strike.ircle', a, 1)
   checkBody('strike.ircle', b, 2)
+  if empty(a) or empty(b) then return false end
   local ax, ay = a:getCentroid()
   local bx, by = b:getCentroid()
   local r = a:getRadius() + b:getRadius()
@@ -203,13 +257,14 @@ function S.ircle(a, b)
 end
 
 --- Bounding-box test for colliders or shapes: true when the boxes overlap (touching is
---- not overlapping).
+--- not overlapping). An empty collider overlaps nothing.
 ---@param a strike.Collider|strike.Shape
 ---@param b strike.Collider|strike.Shape
 ---@return boolean
 function S.aabb(a, b)
   checkBody('strike.aabb', a, 1)
   checkBody('strike.aabb', b, 2)
+  if empty(a) or empty(b) then return false end
   local ax0, ay0, ax1, ay1 = a:getBounds()
   local bx0, by0, bx1, by1 = b:getBounds()
   return ax0 < bx1 and bx0 < ax1 and ay0 < by1 and by0 < ay1

@@ -6,8 +6,8 @@
 --- whatever the kind keeps), so that the narrow phase reads one table per shape.
 ---
 --- What a shape class must provide is declared once, in Shape.INTERFACE below, and checked
---- when the class is registered (S.hapes.X = cls, or a file in shapes/) or first used (added
---- to a collider, or tested).
+--- when the class is registered (S.hapes.X = cls, or a file in shapes/), when an instance is
+--- built, and when one is first used (added to a collider, or tested).
 local ROOT = (...):match('^(.-)%.base%.[^%.]+$')
 local Object = require(ROOT .. '.class')
 local check = require(ROOT .. '.check')
@@ -68,6 +68,8 @@ local poses = 0
 ---@param x number
 ---@param y number
 function Shape:_setPose(x, y)
+  -- (a shape of an incomplete class would fail deep inside the first test that meets it)
+  Shape.checkClass(getmetatable(self), ('strike.%s: its class'):format(tostring(self.name)))
   self.kind = self.kind -- an own copy of the class's kind: the dispatch reads it every test
   for k = 1, layout.HEADER do
     if self[k] == nil then self[k] = 0 end -- (refreshed before any use: the shape starts dirty)
@@ -265,8 +267,12 @@ function Shape:copy(x, y, angle)
   c._dirty = true
   poses = poses + 1
   c._pose = poses
-  if x ~= nil or y ~= nil then c:translateTo(x, y) end
-  if angle ~= nil then c:rotateTo(angle) end
+  if x ~= nil or y ~= nil then
+    number(x, 'strike.Shape:copy', 'x')
+    number(y, 'strike.Shape:copy', 'y')
+    c:translateTo(x, y)
+  end
+  if angle ~= nil then c:rotateTo(number(angle, 'strike.Shape:copy', 'angle')) end
   return c
 end
 

@@ -145,6 +145,7 @@ end
 function VertexShape:getVertices(out)
   if self._dirty then self:_refresh() end
   out = out or {}
+  if type(out) ~= 'table' or out.type ~= nil then check.badOut('strike.Shape:getVertices', out) end
   local n = self._n
   for i = 1, n do
     local k = STRIDE * i + BASE
@@ -177,6 +178,8 @@ end
 ---@return integer
 function VertexShape:getSupport(nx, ny)
   if self._dirty then self:_refresh() end
+  number(nx, 'strike.Shape:getSupport', 'nx')
+  number(ny, 'strike.Shape:getSupport', 'ny')
   local best, bi = -huge, 1
   for i = 1, self._n do
     local k = STRIDE * i + BASE

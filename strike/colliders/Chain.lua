@@ -38,11 +38,17 @@ function Chain:new(...)
       fail(('%s: expected a table of coordinates and an optional loop flag, got %d arguments'):format(FNAME, count))
     end
     loop = select(2, ...)
+    local tail = first[#first]
+    if #first % 2 == 1 and type(tail) ~= 'number' then
+      fail(('%s: the loop flag goes after the table, as in S.trikers.Chain({x1, y1, ...}, true); got %s as the'
+        .. ' last value of the table'):format(FNAME, describe(tail)))
+    end
     xs, ys, n = check.coordinates(FNAME, first)
   else
     local args = { ... }
     local last = args[count]
-    if count > 0 and (type(last) == 'boolean' or (last == nil and count % 2 == 1)) then
+    -- (after an odd number of values, anything but a number is meant as the flag)
+    if count > 0 and (type(last) == 'boolean' or (count % 2 == 1 and type(last) ~= 'number')) then
       loop, count = last, count - 1
     end
     xs, ys, n = check.coordinates(FNAME, unpack(args, 1, count))

@@ -85,6 +85,13 @@ function Collider:add(...)
     end
     if isShape(child) then
       Shape.checkClass(getmetatable(child), ('strike.Collider:add: argument %d (a %s)'):format(i, tostring(child.name)))
+      if child._pose == nil then
+        fail(('strike.Collider:add: argument %d (a %s) was not built by a strike shape constructor (its new must'
+          .. ' call the parent\'s: Class.super.new(self, ...))'):format(i, tostring(child.name)))
+      end
+    elseif child._single == nil then
+      fail(('strike.Collider:add: argument %d (a %s) was not built by a strike collider constructor (its new'
+        .. ' must call the parent\'s: Class.super.new(self, ...))'):format(i, tostring(child.name)))
     end
     if child.parent then
       fail(('strike.Collider:add: argument %d already belongs to a collider; remove it first or add a copy'):format(i))
@@ -522,8 +529,12 @@ function Collider:copy(x, y, angle)
     child.parent = c
     c.shapes[i] = child
   end
-  if x ~= nil or y ~= nil then c:translateTo(x, y) end
-  if angle ~= nil then c:rotateTo(angle) end
+  if x ~= nil or y ~= nil then
+    number(x, 'strike.Collider:copy', 'x')
+    number(y, 'strike.Collider:copy', 'y')
+    c:translateTo(x, y)
+  end
+  if angle ~= nil then c:rotateTo(number(angle, 'strike.Collider:copy', 'angle')) end
   return c
 end
 

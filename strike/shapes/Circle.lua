@@ -87,6 +87,7 @@ function Circle:getVertexCount() return 0 end
 ---@return table, integer
 function Circle:getVertices(out)
   out = out or {}
+  if type(out) ~= 'table' or out.type ~= nil then check.badOut('strike.Shape:getVertices', out) end
   for i = #out, 1, -1 do out[i] = nil end
   return out, 0
 end
@@ -97,6 +98,8 @@ end
 ---@return number x, number y
 function Circle:getSupport(nx, ny)
   local r = self._r * self._scale
+  number(nx, 'strike.Shape:getSupport', 'nx')
+  number(ny, 'strike.Shape:getSupport', 'ny')
   return self[X] + nx * r, self[Y] + ny * r
 end
 
@@ -124,6 +127,13 @@ local function axisToward(self, other)
   return dx / l, dy / l
 end
 
+-- The `other` of ipairs and vecs: nil or a shape.
+local function checkOther(other, fname)
+  if other ~= nil and (type(other) ~= 'table' or other.type ~= 'shape' or other._pose == nil) then
+    check.fail(('%s: other must be a strike shape or nil, got %s'):format(fname, check.what(other)))
+  end
+end
+
 local function circleEdgeIter(state, i)
   if i >= 1 then return nil end
   local self, other = state[1], state[2]
@@ -140,6 +150,7 @@ end
 ---@param other strike.Shape|nil
 ---@return function, table, integer
 function Circle:ipairs(other)
+  checkOther(other, 'strike.Circle:ipairs')
   return circleEdgeIter, { self, other }, 0
 end
 
@@ -154,6 +165,7 @@ end
 ---@param other strike.Shape|nil
 ---@return function, table, integer
 function Circle:vecs(other)
+  checkOther(other, 'strike.Circle:vecs')
   return circleVecIter, { self, other }, 0
 end
 
