@@ -18,7 +18,7 @@ local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
 
 local describe, fail = check.describe, check.fail
-local root, stamp = Shape.getRoot, compound.stamp
+local root, stamp = Shape._rootOf, compound.stamp
 
 ---@class strike
 local S = {

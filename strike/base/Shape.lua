@@ -238,12 +238,18 @@ function Shape:getBounds()
   return self[MINX], self[MINY], self[MAXX], self[MAXY]
 end
 
+-- The outermost collider holding `node`, a shape or a collider, or `node` itself: getRoot
+-- without its check of `self`, for S.AT and S.triking.
+local function rootOf(node)
+  while node.parent do node = node.parent end
+  return node
+end
+Shape._rootOf = rootOf
+
 --- The outermost collider that holds this shape, or the shape itself when it has none.
 ---@return strike.Shape|strike.Collider
 function Shape:getRoot()
-  local node = self
-  while node.parent do node = node.parent end
-  return node
+  return rootOf(self)
 end
 
 --- An independent copy of the same class, in the same pose; then, if given, moved so its

@@ -88,6 +88,18 @@ function MTV:setEdgeIndex(index) self.edgeIndex = index return self end
 ---@return self
 function MTV:setSeparating(separating) self.separating = separating and true or false return self end
 
+-- Copy every field of the MTV `other` into the table `self`: MTV:set without its checks,
+-- for S.triking, whose `out` may be a plain table.
+local function copy(self, other)
+  self.x, self.y, self.nx, self.ny, self.depth = other.x, other.y, other.nx, other.ny, other.depth
+  self.separating, self.edgeIndex = other.separating, other.edgeIndex
+  self.collider, self.collided = other.collider, other.collided
+  self.colliderShape, self.collidedShape = other.colliderShape, other.collidedShape
+  self._poseA, self._poseB = other._poseA or false, other._poseB or false
+  return self
+end
+MTV._set = copy
+
 --- Copy every field of `other` into this MTV.
 ---@param other strike.MTV
 ---@return self
@@ -95,12 +107,7 @@ function MTV:set(other)
   if type(other) ~= 'table' or type(other.x) ~= 'number' or type(other.y) ~= 'number' then
     check.fail(('strike.MTV:set: argument 1 must be an MTV, got %s'):format(check.describe(other)))
   end
-  self.x, self.y, self.nx, self.ny, self.depth = other.x, other.y, other.nx, other.ny, other.depth
-  self.separating, self.edgeIndex = other.separating, other.edgeIndex
-  self.collider, self.collided = other.collider, other.collided
-  self.colliderShape, self.collidedShape = other.colliderShape, other.collidedShape
-  self._poseA, self._poseB = other._poseA or false, other._poseB or false
-  return self
+  return copy(self, other)
 end
 
 return MTV
