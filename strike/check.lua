@@ -65,6 +65,44 @@ function check.badOut(fname, out)
   check.fail(('%s: out must be a table or nil, got %s'):format(fname, check.what(out)))
 end
 
+-- What a method's `self` was, for check.badSelf: strike's objects by what they are.
+local function describeSelf(v)
+  if type(v) ~= 'table' then
+    if type(v) == 'number' then return 'the number ' .. check.describe(v) end
+    return check.describe(v)
+  end
+  if rawget(v, '__index') == v then return 'a class' end
+  local t = v.type
+  if t == 'shape' then return 'a shape' end
+  if t == 'collider' then return 'a collider' end
+  if t == 'mtv' then return 'an MTV' end
+  return 'a table that is no strike object'
+end
+
+--- The error for a method called with '.' instead of ':' (`k.add(b)` for `k:add(b)`): its
+--- `self` is not an object it works on. Methods test their `self` inline (one type() and
+--- one field read, nothing called on the happy path) and call this only when the test
+--- fails; the error is raised at the caller's line. `fname` names the method
+--- ('strike.Collider:add'); `on`, when given, says what to call it on ('a class').
+---@param self any
+---@param fname string
+---@param on string|nil
+function check.badSelf(self, fname, on)
+  check.fail(("%s: called with '.' instead of ':' (self is %s); call it with ':'%s"):format(fname,
+    describeSelf(self), on and (' on ' .. on) or ''))
+end
+
+--- The failure path of a collider method's inline test of its `self`, `type(self) ~= 'table'
+--- or self.shapes == nil` (an own field: cheaper than the class's `type`). Returns when
+--- `self` is a collider after all, one whose constructor has not made its list of children
+--- (Collider:add makes it); otherwise raises check.badSelf's error.
+---@param self any
+---@param fname string
+function check.badCollider(self, fname)
+  if type(self) == 'table' and self.type == 'collider' and rawget(self, '__index') ~= self then return end
+  check.badSelf(self, fname)
+end
+
 ---@param v any
 ---@return boolean
 local function finite(v)

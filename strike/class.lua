@@ -2,6 +2,8 @@
 --- `Base:extend()`, `Class:new(...)` as the constructor body (its return value is ignored),
 --- `Class(...)` to instantiate, `Class.super` for the parent, and `obj:is(Class)`.
 --- Written for strike; it follows the shape of rxi's classic without its code.
+local check = require((...):match('^(.-)%.[^%.]+$') .. '.check')
+local type = type
 
 ---@class strike.Object
 ---@field super strike.Object|nil the parent class
@@ -9,12 +11,17 @@ local Object = {}
 Object.__index = Object
 
 --- Constructor body; subclasses override it. The return value is ignored.
-function Object:new() end
+function Object:new()
+  if type(self) ~= 'table' or getmetatable(self) == nil then check.badSelf(self, 'strike.Object:new') end
+end
 
 --- Create a subclass. Metamethods (keys starting with "__") are copied so that
 --- instances of the subclass keep them.
 ---@return table cls the new class
 function Object:extend()
+  if type(self) ~= 'table' or rawget(self, '__index') ~= self then
+    check.badSelf(self, 'strike.Object:extend', 'a class')
+  end
   local cls = {}
   for k, v in pairs(self) do
     if type(k) == 'string' and k:sub(1, 2) == '__' then cls[k] = v end
@@ -28,6 +35,10 @@ end
 ---@param T table a class
 ---@return boolean
 function Object:is(T)
+  -- (obj.is(T) passes the class T as self and nothing as T)
+  if type(self) ~= 'table' or (T == nil and rawget(self, '__index') == self) then
+    check.badSelf(self, 'strike.Object:is')
+  end
   local mt = getmetatable(self)
   while mt do
     if mt == T then return true end

@@ -18,7 +18,7 @@ local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
 
 local describe, what, fail = check.describe, check.what, check.fail
-local root = Shape.getRoot
+local root = Shape._rootOf
 
 ---@class strike
 local S = {

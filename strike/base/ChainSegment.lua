@@ -35,6 +35,7 @@ local rotate = require(ROOT .. '.vec').rotate
 local X, Y = layout.X, layout.Y
 local sqrt = math.sqrt
 local number, fail, describe = check.number, check.fail, check.describe
+local badSelf, type = check.badSelf, type
 
 ---@class strike.ChainSegment : strike.Edge
 local ChainSegment = Edge:extend()
@@ -64,6 +65,7 @@ end
 ---@param x3 number|nil
 ---@param y3 number|nil
 function ChainSegment:new(x1, y1, x2, y2, x0, y0, x3, y3)
+  if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.ChainSegment:new') end
   number(x1, FNAME, 'x1')
   number(y1, FNAME, 'y1')
   number(x2, FNAME, 'x2')
@@ -134,6 +136,7 @@ end
 --- p2, each nil, nil at an open chain's end.
 ---@return number|nil x0, number|nil y0, number|nil x3, number|nil y3
 function ChainSegment:getGhostVertices()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.ChainSegment:getGhostVertices') end
   if self._dirty then self:_refresh() end
   local x0, y0, x3, y3
   if self._hasPrev then x0, y0 = self._wprevx, self._wprevy end
@@ -146,6 +149,7 @@ end
 ---@param i integer
 ---@return boolean|nil
 function ChainSegment:isConvex(i)
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.ChainSegment:isConvex') end
   if i == 1 then return self._convex1 elseif i == 2 then return self._convex2 end
   return nil
 end
@@ -154,6 +158,7 @@ end
 --- ghost vertices nil at an open end).
 ---@return number, number, number, number, number|nil, number|nil, number|nil, number|nil
 function ChainSegment:unpack()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:unpack') end
   local x1, y1, x2, y2 = Edge.unpack(self)
   local x0, y0, x3, y3 = self:getGhostVertices()
   return x1, y1, x2, y2, x0, y0, x3, y3

@@ -21,6 +21,7 @@ local cos, sin, abs = math.cos, math.sin, math.abs
 local rotate = vec.rotate
 local number, positive, optPoint, finite, fail = check.number, check.positive, check.optPoint, check.finite,
   check.fail
+local badSelf, type = check.badSelf, type
 
 ---@class strike.Shape : strike.Object
 ---@field parent strike.Collider|nil the collider holding this shape, if any
@@ -131,6 +132,7 @@ end
 ---@param dy number
 ---@return self
 function Shape:translate(dx, dy)
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:translate') end
   number(dx, 'strike.Shape:translate', 'dx')
   number(dy, 'strike.Shape:translate', 'dy')
   setPose(self, self[X] + dx, self[Y] + dy, self._scale, 'strike.Shape:translate')
@@ -143,6 +145,7 @@ end
 ---@param y number
 ---@return self
 function Shape:translateTo(x, y)
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:translateTo') end
   number(x, 'strike.Shape:translateTo', 'x')
   number(y, 'strike.Shape:translateTo', 'y')
   setPose(self, x, y, self._scale, 'strike.Shape:translateTo')
@@ -169,6 +172,7 @@ end
 ---@param refy number|nil
 ---@return self
 function Shape:rotate(angle, refx, refy)
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:rotate') end
   number(angle, 'strike.Shape:rotate', 'angle')
   refx, refy = optPoint(refx, refy, 'strike.Shape:rotate')
   return rotateBy(self, angle, refx, refy, 'strike.Shape:rotate')
@@ -181,6 +185,7 @@ end
 ---@param refy number|nil
 ---@return self
 function Shape:rotateTo(angle, refx, refy)
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:rotateTo') end
   number(angle, 'strike.Shape:rotateTo', 'angle')
   refx, refy = optPoint(refx, refy, 'strike.Shape:rotateTo')
   return rotateBy(self, angle - self._angle, refx, refy, 'strike.Shape:rotateTo')
@@ -193,6 +198,7 @@ end
 ---@param refy number|nil
 ---@return self
 function Shape:scale(sf, refx, refy)
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:scale') end
   positive(sf, 'strike.Shape:scale', 'factor')
   refx, refy = optPoint(refx, refy, 'strike.Shape:scale')
   local x, y = self[X], self[Y]
@@ -204,31 +210,50 @@ end
 
 --- The angle in radians: the constructor's angle plus every rotation since.
 ---@return number
-function Shape:getAngle() return self._angle end
+function Shape:getAngle()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getAngle') end
+  return self._angle
+end
 
 --- The accumulated scale factor (1 after construction).
 ---@return number
-function Shape:getScale() return self._scale end
+function Shape:getScale()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getScale') end
+  return self._scale
+end
 
 --- The centroid (area centroid for polygons, centre for circles, midpoint for edges).
 ---@return number x, number y
-function Shape:getCentroid() return self[X], self[Y] end
+function Shape:getCentroid()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getCentroid') end
+  return self[X], self[Y]
+end
 
 --- The area (never negative; 0 for an Edge).
 ---@return number
-function Shape:getArea() return self._area * self._scale * self._scale end
+function Shape:getArea()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getArea') end
+  return self._area * self._scale * self._scale
+end
 
 --- Area and centroid together.
 ---@return number area, number x, number y
-function Shape:getAreaCentroid() return self:getArea(), self[X], self[Y] end
+function Shape:getAreaCentroid()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getAreaCentroid') end
+  return self:getArea(), self[X], self[Y]
+end
 
 --- Radius of the smallest circle about the centroid that holds the shape.
 ---@return number
-function Shape:getRadius() return self._radius * self._scale end
+function Shape:getRadius()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getRadius') end
+  return self._radius * self._scale
+end
 
 --- Axis-aligned bounds as minimum x, minimum y, width, height.
 ---@return number x, number y, number w, number h
 function Shape:getBbox()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getBbox') end
   if self._dirty then self:_refresh() end
   return self[MINX], self[MINY], self[MAXX] - self[MINX], self[MAXY] - self[MINY]
 end
@@ -236,16 +261,24 @@ end
 --- Axis-aligned bounds as minimum x, minimum y, maximum x, maximum y.
 ---@return number minx, number miny, number maxx, number maxy
 function Shape:getBounds()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getBounds') end
   if self._dirty then self:_refresh() end
   return self[MINX], self[MINY], self[MAXX], self[MAXY]
 end
 
+-- The outermost collider holding `node`, a shape or a collider, or `node` itself: getRoot
+-- without its check of `self`, for S.AT and S.triking.
+local function rootOf(node)
+  while node.parent do node = node.parent end
+  return node
+end
+Shape._rootOf = rootOf
+
 --- The outermost collider that holds this shape, or the shape itself when it has none.
 ---@return strike.Shape|strike.Collider
 function Shape:getRoot()
-  local node = self
-  while node.parent do node = node.parent end
-  return node
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getRoot') end
+  return rootOf(self)
 end
 
 --- An independent copy of the same class, in the same pose; then, if given, moved so its
@@ -258,6 +291,7 @@ end
 ---@param angle number|nil
 ---@return strike.Shape
 function Shape:copy(x, y, angle)
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:copy') end
   local c = setmetatable({}, getmetatable(self))
   for k = 1, #self do c[k] = self[k] end -- (the array part first, so it stays an array)
   for k, v in pairs(self) do
@@ -289,6 +323,7 @@ end
 --- an error when LÖVE is not there).
 ---@param mode string|nil 'line' (default) or 'fill'
 function Shape:draw(mode)
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:draw') end
   require(ROOT .. '.draw').body(self, mode)
 end
 
@@ -311,6 +346,7 @@ local rayIntersections, rayIntersects, rayCast, segmentCast = ray.intersections,
 ---@param ts number[]|nil
 ---@return number[]|nil ts, integer n the list and the count; nil, 0 when the ray misses
 function Shape:rayIntersections(x, y, dx, dy, ts)
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:rayIntersections') end
   checkRay('strike.Shape:rayIntersections', x, y, dx, dy)
   if ts ~= nil and type(ts) ~= 'table' then checkTs('strike.Shape:rayIntersections', ts) end
   return rayIntersections(self, x, y, dx, dy, ts)
@@ -324,6 +360,7 @@ end
 ---@param dy number
 ---@return boolean
 function Shape:rayIntersects(x, y, dx, dy)
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:rayIntersects') end
   checkRay('strike.Shape:rayIntersects', x, y, dx, dy)
   return rayIntersects(self, x, y, dx, dy)
 end
@@ -342,6 +379,7 @@ end
 ---@param maxDistance number|nil
 ---@return number|nil distance, number x, number y, number nx, number ny
 function Shape:rayCast(x, y, dx, dy, maxDistance)
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:rayCast') end
   checkRay('strike.Shape:rayCast', x, y, dx, dy)
   return rayCast(self, x, y, dx, dy, checkMax('strike.Shape:rayCast', maxDistance))
 end
@@ -354,6 +392,7 @@ end
 ---@param y2 number
 ---@return number|nil distance, number x, number y, number nx, number ny
 function Shape:segmentCast(x1, y1, x2, y2)
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:segmentCast') end
   checkSegment('strike.Shape:segmentCast', x1, y1, x2, y2)
   return segmentCast(self, x1, y1, x2, y2)
 end

@@ -25,6 +25,7 @@ local BASE = layout.BASE
 
 local sqrt, huge, abs, floor = math.sqrt, math.huge, math.abs, math.floor
 local number = check.number
+local badSelf, type = check.badSelf, type
 
 ---@class strike.VertexShape : strike.Shape
 local VertexShape = Shape:extend()
@@ -104,12 +105,16 @@ end
 
 --- Number of vertices (2 for an Edge).
 ---@return integer
-function VertexShape:getVertexCount() return self._n end
+function VertexShape:getVertexCount()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getVertexCount') end
+  return self._n
+end
 
 --- World coordinates of vertex i, or nil when i is out of range (never an error).
 ---@param i integer
 ---@return number|nil x, number|nil y
 function VertexShape:getVertex(i)
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getVertex') end
   if not inRange(i, self._n) then return nil end
   if self._dirty then self:_refresh() end
   local k = STRIDE * i + BASE
@@ -121,6 +126,7 @@ end
 ---@param i integer
 ---@return number|nil x1, number|nil y1, number|nil x2, number|nil y2
 function VertexShape:getEdge(i)
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getEdge') end
   local n = self._n
   if not inRange(i, n) then return nil end
   if self._dirty then self:_refresh() end
@@ -132,6 +138,7 @@ end
 ---@param i integer
 ---@return number|nil nx, number|nil ny
 function VertexShape:getNormal(i)
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getNormal') end
   if not inRange(i, self._n) then return nil end
   if self._dirty then self:_refresh() end
   local k = STRIDE * i + BASE
@@ -143,6 +150,7 @@ end
 ---@param out number[]|nil
 ---@return number[] vertices, integer count the number of vertices
 function VertexShape:getVertices(out)
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getVertices') end
   if self._dirty then self:_refresh() end
   out = out or {}
   if type(out) ~= 'table' or out.type ~= nil then check.badOut('strike.Shape:getVertices', out) end
@@ -160,6 +168,7 @@ end
 ---@param ny number
 ---@return number min, number max
 function VertexShape:project(nx, ny)
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:project') end
   number(nx, 'strike.Shape:project', 'nx')
   number(ny, 'strike.Shape:project', 'ny')
   if self._dirty then self:_refresh() end
@@ -177,6 +186,7 @@ end
 ---@param ny number
 ---@return integer
 function VertexShape:getSupport(nx, ny)
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getSupport') end
   if self._dirty then self:_refresh() end
   number(nx, 'strike.Shape:getSupport', 'nx')
   number(ny, 'strike.Shape:getSupport', 'ny')
@@ -195,6 +205,7 @@ end
 ---@param y number|nil
 ---@return boolean
 function VertexShape:containsPoint(x, y)
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:containsPoint') end
   x, y = Shape._point(x, y, 'strike.Shape:containsPoint')
   if self._dirty then self:_refresh() end
   if self._n < 3 then return false end
@@ -217,6 +228,7 @@ end
 --- Allocates nothing. The argument is accepted for compatibility and ignored.
 ---@return function, strike.VertexShape, integer
 function VertexShape:ipairs()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:ipairs') end
   if self._dirty then self:_refresh() end
   return edgeIter, self, 0
 end
@@ -233,6 +245,7 @@ end
 --- Iterate over edge vectors: `for i, dx, dy in shape:vecs() do`. Allocates nothing.
 ---@return function, strike.VertexShape, integer
 function VertexShape:vecs()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:vecs') end
   if self._dirty then self:_refresh() end
   return vecIter, self, 0
 end

@@ -6,6 +6,7 @@
 local ROOT = (...):match('^(.-)%.collide%.[^%.]+$')
 local Object = require(ROOT .. '.class')
 local check = require(ROOT .. '.check')
+local badSelf, type = check.badSelf, type
 
 local sqrt = math.sqrt
 
@@ -34,6 +35,7 @@ MTV.type = 'mtv'
 ---@param collidedShape strike.Shape|nil
 ---@param separating boolean|nil
 function MTV:new(dx, dy, colliderShape, collidedShape, separating)
+  if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.MTV:new') end
   dx = check.optNumber(dx, 'strike.MTV', 'dx', 0)
   dy = check.optNumber(dy, 'strike.MTV', 'dy', 0)
   local l = sqrt(dx * dx + dy * dy)
@@ -54,16 +56,23 @@ end
 
 --- Length of the vector.
 ---@return number
-function MTV:mag() return sqrt(self.x * self.x + self.y * self.y) end
+function MTV:mag()
+  if type(self) ~= 'table' or self.type ~= 'mtv' then badSelf(self, 'strike.MTV:mag') end
+  return sqrt(self.x * self.x + self.y * self.y)
+end
 
 --- Squared length of the vector.
 ---@return number
-function MTV:mag2() return self.x * self.x + self.y * self.y end
+function MTV:mag2()
+  if type(self) ~= 'table' or self.type ~= 'mtv' then badSelf(self, 'strike.MTV:mag2') end
+  return self.x * self.x + self.y * self.y
+end
 
 --- Multiply the vector by s (the normal and depth are left as they are).
 ---@param s number
 ---@return self
 function MTV:scale(s)
+  if type(self) ~= 'table' or self.type ~= 'mtv' then badSelf(self, 'strike.MTV:scale') end
   check.number(s, 'strike.MTV:scale', 'factor')
   self.x, self.y = self.x * s, self.y * s
   return self
@@ -71,36 +80,68 @@ end
 
 ---@param collider table
 ---@return self
-function MTV:setCollider(collider) self.collider = collider return self end
+function MTV:setCollider(collider)
+  if type(self) ~= 'table' or self.type ~= 'mtv' then badSelf(self, 'strike.MTV:setCollider') end
+  self.collider = collider
+  return self
+end
 ---@param collided table
 ---@return self
-function MTV:setCollided(collided) self.collided = collided return self end
+function MTV:setCollided(collided)
+  if type(self) ~= 'table' or self.type ~= 'mtv' then badSelf(self, 'strike.MTV:setCollided') end
+  self.collided = collided
+  return self
+end
 ---@param shape strike.Shape
 ---@return self
-function MTV:setColliderShape(shape) self.colliderShape = shape return self end
+function MTV:setColliderShape(shape)
+  if type(self) ~= 'table' or self.type ~= 'mtv' then badSelf(self, 'strike.MTV:setColliderShape') end
+  self.colliderShape = shape
+  return self
+end
 ---@param shape strike.Shape
 ---@return self
-function MTV:setCollidedShape(shape) self.collidedShape = shape return self end
+function MTV:setCollidedShape(shape)
+  if type(self) ~= 'table' or self.type ~= 'mtv' then badSelf(self, 'strike.MTV:setCollidedShape') end
+  self.collidedShape = shape
+  return self
+end
 ---@param index integer
 ---@return self
-function MTV:setEdgeIndex(index) self.edgeIndex = index return self end
+function MTV:setEdgeIndex(index)
+  if type(self) ~= 'table' or self.type ~= 'mtv' then badSelf(self, 'strike.MTV:setEdgeIndex') end
+  self.edgeIndex = index
+  return self
+end
 ---@param separating boolean
 ---@return self
-function MTV:setSeparating(separating) self.separating = separating and true or false return self end
+function MTV:setSeparating(separating)
+  if type(self) ~= 'table' or self.type ~= 'mtv' then badSelf(self, 'strike.MTV:setSeparating') end
+  self.separating = separating and true or false
+  return self
+end
 
---- Copy every field of `other` into this MTV.
----@param other strike.MTV
----@return self
-function MTV:set(other)
-  if type(other) ~= 'table' or type(other.x) ~= 'number' or type(other.y) ~= 'number' then
-    check.fail(('strike.MTV:set: argument 1 must be an MTV, got %s'):format(check.describe(other)))
-  end
+-- Copy every field of the MTV `other` into the table `self`: MTV:set without its checks,
+-- for S.triking, whose `out` may be a plain table.
+local function copy(self, other)
   self.x, self.y, self.nx, self.ny, self.depth = other.x, other.y, other.nx, other.ny, other.depth
   self.separating, self.edgeIndex = other.separating, other.edgeIndex
   self.collider, self.collided = other.collider, other.collided
   self.colliderShape, self.collidedShape = other.colliderShape, other.collidedShape
   self._poseA, self._poseB = other._poseA or false, other._poseB or false
   return self
+end
+MTV._set = copy
+
+--- Copy every field of `other` into this MTV.
+---@param other strike.MTV
+---@return self
+function MTV:set(other)
+  if type(self) ~= 'table' or self.type ~= 'mtv' then badSelf(self, 'strike.MTV:set') end
+  if type(other) ~= 'table' or type(other.x) ~= 'number' or type(other.y) ~= 'number' then
+    check.fail(('strike.MTV:set: argument 1 must be an MTV, got %s'):format(check.describe(other)))
+  end
+  return copy(self, other)
 end
 
 return MTV

@@ -16,7 +16,7 @@ local pair = require(ROOT .. '.collide.dispatch').pair
 
 local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
 local min, max = math.min, math.max
-local root, leafList = Shape.getRoot, Collider._leafList
+local root, leafList = Shape._rootOf, Collider._leafList
 
 local compound = {}
 
@@ -59,7 +59,7 @@ function compound.collide(body1, body2, out)
     end
     local m = pair[s1.kind][s2.kind].collide(s1, s2, out or tmpA)
     if not (m.depth > 0) then return false end -- luacheck: ignore 581 (NaN reads as no collision)
-    if not out then out = MTV.set(MTV(), m) end
+    if not out then out = MTV._set(MTV(), m) end
     out.collider, out.collided = r1, r2
     out._poseA, out._poseB = s1._pose, s2._pose
     return out
@@ -92,7 +92,7 @@ function compound.collide(body1, body2, out)
     end
   end
   if not found then return false end
-  if best ~= out then out = MTV.set(out or MTV(), best) end
+  if best ~= out then out = MTV._set(out or MTV(), best) end
   return stamp(out, r1, r2)
 end
 

@@ -4,6 +4,7 @@ local Collider = require(ROOT .. '.colliders.Collider')
 local Circle = require(ROOT .. '.shapes.Circle')
 local Rectangle = require(ROOT .. '.shapes.Rectangle')
 local check = require(ROOT .. '.check')
+local badSelf, badCollider, type = check.badSelf, check.badCollider, type
 
 local sqrt, pi = math.sqrt, math.pi
 
@@ -21,6 +22,7 @@ Capsule.name = 'Capsule'
 ---@param dy number
 ---@param angle number|nil
 function Capsule:new(x, y, dx, dy, angle)
+  if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.Capsule:new') end
   check.number(x, 'strike.Capsule', 'x')
   check.number(y, 'strike.Capsule', 'y')
   check.positive(dx, 'strike.Capsule', 'width')
@@ -55,6 +57,7 @@ end
 --- would count the caps twice).
 ---@return number
 function Capsule:getArea()
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getArea') end
   local r, l = caps(self)
   if not r then return Collider.getArea(self) end
   return pi * r * r + 2 * r * l
@@ -63,6 +66,7 @@ end
 --- Area and centroid together.
 ---@return number area, number x, number y
 function Capsule:getAreaCentroid()
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getAreaCentroid') end
   local x, y = self:getCentroid()
   return self:getArea(), x, y
 end
@@ -70,6 +74,7 @@ end
 --- Width and height (caps included), as they are now.
 ---@return number width, number height
 function Capsule:getDimensions()
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Capsule:getDimensions') end
   local r, l = caps(self)
   if not r then return 0, 0 end
   return 2 * r, 2 * r + l

@@ -16,6 +16,7 @@ local check = require(ROOT .. '.check')
 local unpack = require(ROOT .. '.compat').unpack
 
 local fail, describe, finite = check.fail, check.describe, check.finite
+local badSelf, badCollider, type = check.badSelf, check.badCollider, type
 
 ---@class strike.Chain : strike.Collider
 local Chain = Collider:extend()
@@ -31,6 +32,7 @@ local FNAME = 'strike.Chain'
 --- for a loop.
 ---@param ... number|number[]|boolean
 function Chain:new(...)
+  if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.Chain:new') end
   local count, first = select('#', ...), ...
   local loop, xs, ys, n
   if type(first) == 'table' then
@@ -90,6 +92,9 @@ end
 
 --- Whether the chain is closed (its last point joined back to the first).
 ---@return boolean
-function Chain:isLoop() return self._loop end
+function Chain:isLoop()
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Chain:isLoop') end
+  return self._loop
+end
 
 return Chain

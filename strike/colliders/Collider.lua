@@ -40,6 +40,7 @@ local rotate = require(ROOT .. '.vec').rotate
 local cos, sin, huge, abs = math.cos, math.sin, math.huge, math.abs
 local number, positive, optPoint, fail, describe = check.number, check.positive, check.optPoint, check.fail,
   check.describe
+local badSelf, badCollider, type = check.badSelf, check.badCollider, type
 
 ---@class strike.Collider : strike.Object
 ---@field shapes (strike.Shape|strike.Collider)[] the direct children, in order
@@ -55,6 +56,7 @@ local function isCollider(v) return type(v) == 'table' and getmetatable(v) ~= ni
 --- A collider holding the given shapes and colliders (any number, nested to any depth).
 ---@param ... strike.Shape|strike.Collider
 function Collider:new(...)
+  if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.Collider:new') end
   self.shapes = {}
   self._angle = 0
   -- (the cache fields get their slots now, so the object's fields are laid out once, at
@@ -76,6 +78,7 @@ end
 ---@param ... strike.Shape|strike.Collider
 ---@return self
 function Collider:add(...)
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:add') end
   local shapes = self.shapes
   if not shapes then shapes = {}; self.shapes = shapes end
   for i = 1, select('#', ...) do
@@ -122,6 +125,7 @@ end
 ---@param ... integer
 ---@return strike.Shape|strike.Collider ...
 function Collider:remove(index, ...)
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:remove') end
   local shapes = self.shapes or {}
   local n = #shapes
   local idx = { index, ... }
@@ -153,6 +157,7 @@ end
 --- The direct children (shapes and colliders), not copies.
 ---@return strike.Shape|strike.Collider ...
 function Collider:unpack()
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:unpack') end
   local shapes = self.shapes or {}
   return unpack(shapes, 1, #shapes)
 end
@@ -264,6 +269,7 @@ Collider._refresh = refresh
 --- Recompute area and centroid now (they are also kept up to date automatically).
 ---@return self
 function Collider:calcAreaCentroid()
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:calcAreaCentroid') end
   self._massOK, self._clean = false, false
   refresh(self)
   return self
@@ -271,11 +277,15 @@ end
 
 --- Recompute the radius now (it is also kept up to date automatically).
 ---@return self
-Collider.calcRadius = Collider.calcAreaCentroid
+function Collider:calcRadius()
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:calcRadius') end
+  return self:calcAreaCentroid()
+end
 
 --- Total area of the leaf shapes (overlapping members count twice; edges add nothing).
 ---@return number
 function Collider:getArea()
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getArea') end
   if not self._massOK then refreshMass(self) end
   return self._area
 end
@@ -285,6 +295,7 @@ end
 --- when empty.
 ---@return number x, number y
 function Collider:getCentroid()
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getCentroid') end
   if not self._massOK then refreshMass(self) end
   return self._cx, self._cy
 end
@@ -292,6 +303,7 @@ end
 --- Area and centroid together.
 ---@return number area, number x, number y
 function Collider:getAreaCentroid()
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getAreaCentroid') end
   if not self._massOK then refreshMass(self) end
   return self:getArea(), self._cx, self._cy
 end
@@ -299,6 +311,7 @@ end
 --- Radius of the smallest circle about the centroid that holds every leaf.
 ---@return number
 function Collider:getRadius()
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getRadius') end
   if not self._clean then refresh(self) end
   return self._radius
 end
@@ -306,6 +319,7 @@ end
 --- Bounds of all leaves as minimum x, minimum y, width, height; (0, 0, 0, 0) when empty.
 ---@return number x, number y, number w, number h
 function Collider:getBbox()
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getBbox') end
   if not self._clean then refresh(self) end
   return self._minx, self._miny, self._maxx - self._minx, self._maxy - self._miny
 end
@@ -313,6 +327,7 @@ end
 --- Bounds of all leaves as minimum x, minimum y, maximum x, maximum y.
 ---@return number minx, number miny, number maxx, number maxy
 function Collider:getBounds()
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getBounds') end
   if not self._clean then refresh(self) end
   return self._minx, self._miny, self._maxx, self._maxy
 end
@@ -320,18 +335,25 @@ end
 --- The angle: the sum of every rotation applied to this collider (or given to its
 --- constructor, for single-shape colliders and Capsules).
 ---@return number
-function Collider:getAngle() return self._angle or 0 end
+function Collider:getAngle()
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getAngle') end
+  return self._angle or 0
+end
 
 --- Number of leaf shapes in the whole tree.
 ---@return integer
 function Collider:getShapeCount()
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getShapeCount') end
   if not self._leavesOK then refreshLeaves(self) end
   return self._nleaves
 end
 
 --- The outermost collider holding this one (itself when it has no parent).
 ---@return strike.Collider
-Collider.getRoot = Shape.getRoot
+function Collider:getRoot()
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getRoot') end
+  return Shape._rootOf(self)
+end
 
 -- Stateless leaf iterator: the control variable is the previous leaf.
 local function elemsIter(self, prev)
@@ -343,6 +365,7 @@ end
 --- `for shape in collider:elems() do`. Allocates nothing.
 ---@return function, strike.Collider, nil
 function Collider:elems()
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:elems') end
   if not self._leavesOK then refreshLeaves(self) end
   return elemsIter, self, nil
 end
@@ -351,6 +374,7 @@ end
 --- `for parent, shape, index in collider:ipairs() do`. Makes one closure per call.
 ---@return function
 function Collider:ipairs()
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:ipairs') end
   if not self._leavesOK then refreshLeaves(self) end
   local leaves, i = self._leaves, 0
   return function()
@@ -370,6 +394,7 @@ end
 ---@param ny number
 ---@return number min, number max
 function Collider:project(nx, ny)
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:project') end
   number(nx, 'strike.Collider:project', 'nx')
   number(ny, 'strike.Collider:project', 'ny')
   if not self._leavesOK then refreshLeaves(self) end
@@ -388,6 +413,7 @@ end
 ---@param y number|nil
 ---@return boolean
 function Collider:containsPoint(x, y)
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:containsPoint') end
   x, y = Shape._point(x, y, 'strike.Collider:containsPoint')
   if not self._leavesOK then refreshLeaves(self) end
   local leaves = self._leaves
@@ -447,6 +473,7 @@ end
 ---@param dy number
 ---@return self
 function Collider:translate(dx, dy)
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:translate') end
   number(dx, 'strike.Collider:translate', 'dx')
   number(dy, 'strike.Collider:translate', 'dy')
   eachLeaf(self, 'strike.Collider:translate', moved, dx, dy)
@@ -458,6 +485,7 @@ end
 ---@param y number
 ---@return self
 function Collider:translateTo(x, y)
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:translateTo') end
   number(x, 'strike.Collider:translateTo', 'x')
   number(y, 'strike.Collider:translateTo', 'y')
   local cx, cy = self:getCentroid()
@@ -471,6 +499,7 @@ end
 ---@param refy number|nil
 ---@return self
 function Collider:rotate(angle, refx, refy)
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:rotate') end
   number(angle, 'strike.Collider:rotate', 'angle')
   refx, refy = optPoint(refx, refy, 'strike.Collider:rotate')
   if not refx then refx, refy = self:getCentroid() end
@@ -485,6 +514,7 @@ end
 ---@param refy number|nil
 ---@return self
 function Collider:rotateTo(angle, refx, refy)
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:rotateTo') end
   number(angle, 'strike.Collider:rotateTo', 'angle')
   refx, refy = optPoint(refx, refy, 'strike.Collider:rotateTo')
   if not refx then refx, refy = self:getCentroid() end
@@ -500,6 +530,7 @@ end
 ---@param refy number|nil
 ---@return self
 function Collider:scale(sf, refx, refy)
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:scale') end
   positive(sf, 'strike.Collider:scale', 'factor')
   refx, refy = optPoint(refx, refy, 'strike.Collider:scale')
   if not refx then refx, refy = self:getCentroid() end
@@ -516,6 +547,7 @@ end
 ---@param angle number|nil
 ---@return strike.Collider
 function Collider:copy(x, y, angle)
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:copy') end
   local c = setmetatable({}, getmetatable(self))
   for k, v in pairs(self) do
     if k ~= 'parent' and k ~= 'shapes' and k ~= '_leaves' and k ~= '_leafPos' and k ~= '_single' then
@@ -542,6 +574,7 @@ end
 --- loaded on first use; an error when LÖVE is not there).
 ---@param mode string|nil 'line' (default) or 'fill'
 function Collider:draw(mode)
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:draw') end
   require(ROOT .. '.draw').body(self, mode)
 end
 
@@ -550,6 +583,7 @@ end
 --- two in order. Circles and edges are left alone.
 ---@return self
 function Collider:consolidate()
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:consolidate') end
   local shapes = self.shapes or {}
   for i = 1, #shapes do
     if shapes[i].shapes then shapes[i]:consolidate() end
@@ -596,6 +630,7 @@ local leavesIntersections, leavesIntersect, leavesRayCast, leavesSegmentCast = r
 ---@param dy number
 ---@return table<strike.Shape, number[]>|nil
 function Collider:rayIntersections(x, y, dx, dy)
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:rayIntersections') end
   checkRay('strike.Collider:rayIntersections', x, y, dx, dy)
   if not self._leavesOK then refreshLeaves(self) end
   return leavesIntersections(self._leaves, self._nleaves, x, y, dx, dy)
@@ -608,6 +643,7 @@ end
 ---@param dy number
 ---@return boolean
 function Collider:rayIntersects(x, y, dx, dy)
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:rayIntersects') end
   checkRay('strike.Collider:rayIntersects', x, y, dx, dy)
   if not self._leavesOK then refreshLeaves(self) end
   return leavesIntersect(self._leaves, self._nleaves, x, y, dx, dy)
@@ -624,6 +660,7 @@ end
 ---@param maxDistance number|nil
 ---@return number|nil distance, number x, number y, number nx, number ny, strike.Shape shape
 function Collider:rayCast(x, y, dx, dy, maxDistance)
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:rayCast') end
   checkRay('strike.Collider:rayCast', x, y, dx, dy)
   maxDistance = checkMax('strike.Collider:rayCast', maxDistance)
   if not self._leavesOK then refreshLeaves(self) end
@@ -638,6 +675,7 @@ end
 ---@param y2 number
 ---@return number|nil distance, number x, number y, number nx, number ny, strike.Shape shape
 function Collider:segmentCast(x1, y1, x2, y2)
+  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:segmentCast') end
   checkSegment('strike.Collider:segmentCast', x1, y1, x2, y2)
   if not self._leavesOK then refreshLeaves(self) end
   return leavesSegmentCast(self._leaves, self._nleaves, x1, y1, x2, y2)

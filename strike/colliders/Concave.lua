@@ -4,6 +4,7 @@ local Collider = require(ROOT .. '.colliders.Collider')
 local ConvexPolygon = require(ROOT .. '.shapes.ConvexPolygon')
 local decompose = require(ROOT .. '.geometry.decompose')
 local check = require(ROOT .. '.check')
+local badSelf, type = check.badSelf, type
 
 ---@class strike.Concave : strike.Collider
 local Concave = Collider:extend()
@@ -14,6 +15,7 @@ Concave.name = 'Concave'
 --- then Hertel-Mehlhorn merging). Self-intersecting or degenerate outlines are an error.
 ---@param ... number|number[]
 function Concave:new(...)
+  if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.Concave:new') end
   local xs, ys, n = check.coordinates('strike.Concave', ...)
   local pieces, err = decompose.decompose(xs, ys, n)
   if not pieces then check.fail('strike.Concave: ' .. err) end

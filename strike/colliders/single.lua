@@ -13,6 +13,9 @@ return function(shapes, name)
   local Single = Collider:extend()
   Single.name = name
   function Single:new(...)
+    if type(self) ~= 'table' or getmetatable(self) == nil then
+      check.badSelf(self, 'strike.trikers.' .. name .. ':new')
+    end
     local ShapeClass = shapes[name]
     if not ShapeClass then check.fail(('strike.trikers.%s: S.hapes.%s is no longer registered'):format(name, name)) end
     Collider.new(self, ShapeClass(...))

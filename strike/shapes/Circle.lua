@@ -11,6 +11,7 @@ local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAX
 
 local sqrt, pi = math.sqrt, math.pi
 local number, positive = check.number, check.positive
+local badSelf, type = check.badSelf, type
 
 ---@class strike.Circle : strike.Shape
 local Circle = Shape:extend()
@@ -24,6 +25,7 @@ Circle.name = 'Circle'
 ---@param r number
 ---@param angle number|nil
 function Circle:new(x, y, r, angle)
+  if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.Circle:new') end
   number(x, 'strike.Circle', 'x')
   number(y, 'strike.Circle', 'y')
   positive(r, 'strike.Circle', 'radius')
@@ -46,13 +48,17 @@ end
 
 --- The radius now (the constructor's radius times the scale).
 ---@return number
-function Circle:getRadius() return self._r * self._scale end
+function Circle:getRadius()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getRadius') end
+  return self._r * self._scale
+end
 
 --- Minimum and maximum of the projection on the unit vector (nx, ny).
 ---@param nx number
 ---@param ny number
 ---@return number min, number max
 function Circle:project(nx, ny)
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:project') end
   number(nx, 'strike.Shape:project', 'nx')
   number(ny, 'strike.Shape:project', 'ny')
   local d = self[X] * nx + self[Y] * ny
@@ -65,6 +71,7 @@ end
 ---@param y number|nil
 ---@return boolean
 function Circle:containsPoint(x, y)
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:containsPoint') end
   x, y = Shape._point(x, y, 'strike.Shape:containsPoint')
   local dx, dy, r = x - self[X], y - self[Y], self._r * self._scale
   return dx * dx + dy * dy < r * r
@@ -72,20 +79,30 @@ end
 
 --- A circle has no vertices: nil.
 ---@return nil
-function Circle:getVertex() return nil end
+function Circle:getVertex()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getVertex') end
+  return nil
+end
 
 --- A circle has no edges: nil.
 ---@return nil
-function Circle:getEdge() return nil end
+function Circle:getEdge()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getEdge') end
+  return nil
+end
 
 --- A circle has no vertices: count 0.
 ---@return integer
-function Circle:getVertexCount() return 0 end
+function Circle:getVertexCount()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getVertexCount') end
+  return 0
+end
 
 --- A circle has no vertices: `out` (or a new table) emptied, and 0.
 ---@param out table|nil
 ---@return table, integer
 function Circle:getVertices(out)
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getVertices') end
   out = out or {}
   if type(out) ~= 'table' or out.type ~= nil then check.badOut('strike.Shape:getVertices', out) end
   for i = #out, 1, -1 do out[i] = nil end
@@ -97,6 +114,7 @@ end
 ---@param ny number
 ---@return number x, number y
 function Circle:getSupport(nx, ny)
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getSupport') end
   local r = self._r * self._scale
   number(nx, 'strike.Shape:getSupport', 'nx')
   number(ny, 'strike.Shape:getSupport', 'ny')
@@ -150,6 +168,7 @@ end
 ---@param other strike.Shape|nil
 ---@return function, table, integer
 function Circle:ipairs(other)
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:ipairs') end
   checkOther(other, 'strike.Circle:ipairs')
   return circleEdgeIter, { self, other }, 0
 end
@@ -165,6 +184,7 @@ end
 ---@param other strike.Shape|nil
 ---@return function, table, integer
 function Circle:vecs(other)
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:vecs') end
   checkOther(other, 'strike.Circle:vecs')
   return circleVecIter, { self, other }, 0
 end
@@ -179,6 +199,7 @@ end
 --- Arguments that rebuild the circle as it is now: x, y, radius, angle.
 ---@return number, number, number, number
 function Circle:unpack()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:unpack') end
   return self[X], self[Y], self._r * self._scale, self._angle
 end
 

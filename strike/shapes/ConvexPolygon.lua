@@ -10,6 +10,7 @@ local maxSeparation = require(ROOT .. '.collide.sat').maxSeparation
 local abs, max = math.abs, math.max
 
 local finite, describe, fail = check.finite, check.describe, check.fail
+local badSelf, type = check.badSelf, type
 
 ---@class strike.ConvexPolygon : strike.VertexShape
 local ConvexPolygon = VertexShape:extend()
@@ -23,6 +24,7 @@ ConvexPolygon.name = 'ConvexPolygon'
 --- S.trikers.Concave), or values that are not finite numbers.
 ---@param ... number|number[]
 function ConvexPolygon:new(...)
+  if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.ConvexPolygon:new') end
   local fname = 'strike.' .. (self.name or 'ConvexPolygon')
   local xs, ys, n = check.coordinates(fname, ...)
   local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
@@ -63,6 +65,7 @@ end
 ---@param other strike.Shape
 ---@return strike.ConvexPolygon|false
 function ConvexPolygon:merge(other)
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.ConvexPolygon:merge') end
   if type(other) ~= 'table' or other.kind ~= 'polygon' or not other._n or other._n < 3 then return false end
   if self._dirty then self:_refresh() end
   if other._dirty then other:_refresh() end
@@ -87,6 +90,7 @@ end
 --- Arguments that rebuild the polygon as it is now: its world vertices x1, y1, x2, y2, ...
 ---@return number ...
 function ConvexPolygon:unpack()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:unpack') end
   local v = self:getVertices()
   return unpack(v, 1, 2 * self._n)
 end

@@ -5,6 +5,7 @@ local VertexShape = require(ROOT .. '.base.VertexShape')
 local check = require(ROOT .. '.check')
 
 local number, fail = check.number, check.fail
+local badSelf, type = check.badSelf, type
 
 ---@class strike.Edge : strike.VertexShape
 local Edge = VertexShape:extend()
@@ -16,6 +17,7 @@ Edge.name = 'Edge'
 ---@param x2 number
 ---@param y2 number
 function Edge:new(x1, y1, x2, y2)
+  if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.Edge:new') end
   number(x1, 'strike.Edge', 'x1')
   number(y1, 'strike.Edge', 'y1')
   number(x2, 'strike.Edge', 'x2')
@@ -33,11 +35,15 @@ end
 
 --- Length of the segment.
 ---@return number
-function Edge:getLength() return 2 * self:getRadius() end
+function Edge:getLength()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Edge:getLength') end
+  return 2 * self:getRadius()
+end
 
 --- The endpoints as they are now: x1, y1, x2, y2.
 ---@return number, number, number, number
 function Edge:unpack()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:unpack') end
   local x1, y1 = self:getVertex(1)
   local x2, y2 = self:getVertex(2)
   return x1, y1, x2, y2

@@ -2,6 +2,7 @@
 local ROOT = (...):match('^(.-)%.shapes%.[^%.]+$')
 local ConvexPolygon = require(ROOT .. '.shapes.ConvexPolygon')
 local check = require(ROOT .. '.check')
+local badSelf, type = check.badSelf, type
 
 local sin, cos, pi, floor, max, min = math.sin, math.cos, math.pi, math.floor, math.max, math.min
 
@@ -19,6 +20,7 @@ Ellipse.name = 'Ellipse'
 ---@param n integer|nil
 ---@param angle number|nil
 function Ellipse:new(x, y, a, b, n, angle)
+  if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.Ellipse:new') end
   check.number(x, 'strike.Ellipse', 'x')
   check.number(y, 'strike.Ellipse', 'y')
   check.positive(a, 'strike.Ellipse', 'semi-axis a')
@@ -43,6 +45,7 @@ end
 --- Arguments that rebuild it as it is now: x, y, a, b, n, angle.
 ---@return number, number, number, number, integer, number
 function Ellipse:unpack()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:unpack') end
   local s = self._scale
   local cx, cy = self:getCentroid()
   return cx, cy, self.a * s, self.b * s, self.n, self._angle

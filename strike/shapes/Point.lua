@@ -4,6 +4,7 @@
 local ROOT = (...):match('^(.-)%.shapes%.[^%.]+$')
 local Circle = require(ROOT .. '.shapes.Circle')
 local check = require(ROOT .. '.check')
+local badSelf, type = check.badSelf, type
 
 ---@class strike.Point : strike.Circle
 local Point = Circle:extend()
@@ -13,6 +14,7 @@ Point.name = 'Point'
 ---@param x number
 ---@param y number
 function Point:new(x, y)
+  if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.Point:new') end
   check.number(x, 'strike.Point', 'x')
   check.number(y, 'strike.Point', 'y')
   self._r, self._area, self._radius = 0, 0, 0
@@ -22,6 +24,7 @@ end
 --- Arguments that rebuild the point as it is now: x, y.
 ---@return number, number
 function Point:unpack()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:unpack') end
   return self:getCentroid()
 end
 

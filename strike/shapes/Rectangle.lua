@@ -2,6 +2,7 @@
 local ROOT = (...):match('^(.-)%.shapes%.[^%.]+$')
 local ConvexPolygon = require(ROOT .. '.shapes.ConvexPolygon')
 local check = require(ROOT .. '.check')
+local badSelf, type = check.badSelf, type
 
 ---@class strike.Rectangle : strike.ConvexPolygon
 local Rectangle = ConvexPolygon:extend()
@@ -15,6 +16,7 @@ Rectangle.name = 'Rectangle'
 ---@param dy number|nil
 ---@param angle number|nil
 function Rectangle:new(x, y, dx, dy, angle)
+  if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.Rectangle:new') end
   check.number(x, 'strike.Rectangle', 'x')
   check.number(y, 'strike.Rectangle', 'y')
   check.positive(dx, 'strike.Rectangle', 'width')
@@ -31,6 +33,7 @@ end
 --- Arguments that rebuild the rectangle as it is now: x, y, width, height, angle.
 ---@return number, number, number, number, number
 function Rectangle:unpack()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:unpack') end
   local s = self._scale
   local x, y = self:getCentroid()
   return x, y, self.dx * s, self.dy * s, self._angle

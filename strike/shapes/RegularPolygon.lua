@@ -2,6 +2,7 @@
 local ROOT = (...):match('^(.-)%.shapes%.[^%.]+$')
 local ConvexPolygon = require(ROOT .. '.shapes.ConvexPolygon')
 local check = require(ROOT .. '.check')
+local badSelf, type = check.badSelf, type
 
 local sin, cos, pi = math.sin, math.cos, math.pi
 
@@ -18,6 +19,7 @@ RegularPolygon.name = 'RegularPolygon'
 ---@param radius number
 ---@param angle number|nil
 function RegularPolygon:new(x, y, n, radius, angle)
+  if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.RegularPolygon:new') end
   check.number(x, 'strike.RegularPolygon', 'x')
   check.number(y, 'strike.RegularPolygon', 'y')
   check.integer(n, 'strike.RegularPolygon', 'side count', 3, 4096)
@@ -37,6 +39,7 @@ end
 --- Arguments that rebuild it as it is now: x, y, n, radius, angle.
 ---@return number, number, integer, number, number
 function RegularPolygon:unpack()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:unpack') end
   local cx, cy = self:getCentroid()
   return cx, cy, self.n, self.radius * self._scale, self._angle
 end
