@@ -4,8 +4,8 @@
 --- per call.
 local ROOT = (...):match('^(.-)%.[^%.]+$')
 local check = require(ROOT .. '.check')
+local kinds = require(ROOT .. '.collide.dispatch').kind
 
-local cos, sin, pi = math.cos, math.sin, math.pi
 local draw = {}
 local scratch = {}
 
@@ -48,13 +48,10 @@ local function inColour(g, r, gr, bl, fn, a, b, c)
   g.setColor(r0, g0, b0, a0)
 end
 
+-- A shape's outline: its kind's own (dispatch.kind[kind].outline), or its vertices.
 local function outline(g, s, mode)
-  if s.kind == 'circle' then
-    local x, y = s:getCentroid()
-    local r = s:getRadius()
-    if r > 0 then g.circle(mode, x, y, r) else g.points(x, y) end
-    return
-  end
+  local own = kinds[s.kind].outline
+  if own then return own(g, s, mode) end
   local v, n = s:getVertices(scratch)
   if n == 2 then g.line(v[1], v[2], v[3], v[4]) else g.polygon(mode, v) end
 end
@@ -88,16 +85,10 @@ function draw.mtv(mtv)
   inColour(g, 1, 0.2, 0.2, mtvLines, mtv)
 end
 
+-- A shape's normals: its kind's own (dispatch.kind[kind].normals), or one per edge.
 local function shapeNormals(g, s, len)
-  if s.kind == 'circle' then
-    local x, y = s:getCentroid()
-    local r = s:getRadius()
-    for k = 0, 7 do
-      local nx, ny = cos(k * pi / 4), sin(k * pi / 4)
-      g.line(x + nx * r, y + ny * r, x + nx * (r + len), y + ny * (r + len))
-    end
-    return
-  end
+  local own = kinds[s.kind].normals
+  if own then return own(g, s, len) end
   for i, x1, y1, x2, y2 in s:ipairs() do
     local nx, ny = s:getNormal(i)
     local mx, my = (x1 + x2) / 2, (y1 + y2) / 2

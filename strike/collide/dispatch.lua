@@ -8,6 +8,9 @@
 ---   ray(s, ox, oy, ux, uy) -> lo, hi, nxLo, nyLo, nxHi, nyHi   (or nil: a miss)
 ---       the interval [lo, hi] of the line o + t u (u a unit vector) inside the shape (lo
 ---       may be negative, hi >= 0) and the outward unit normals at its two ends.
+---   outline(g, s, mode), normals(g, s, len)   optional: how strike/draw.lua draws a shape
+---       of the kind with love.graphics `g` (passed in: only draw.lua reads `love`); without
+---       them it draws the shape's vertices as a polygon (two: a line) and a normal per edge.
 ---
 --- Per ordered pair of kinds, dispatch.pair[ka][kb] (one table per pair):
 ---   collide(a, b, out) -> out
@@ -41,11 +44,16 @@ end
 
 --- Register what can be done with one shape of kind `k`.
 ---@param k string
----@param ops table { ray = function }
+---@param ops table { ray = function, outline = function|nil, normals = function|nil }
 function dispatch.registerKind(k, ops)
   if type(k) ~= 'string' then error('dispatch.registerKind: the kind must be a string', 2) end
   if type(ops) ~= 'table' or type(ops.ray) ~= 'function' then
     error(('dispatch.registerKind: kind %q needs a ray function'):format(k), 2)
+  end
+  for _, name in ipairs({ 'outline', 'normals' }) do
+    if ops[name] ~= nil and type(ops[name]) ~= 'function' then
+      error(('dispatch.registerKind: kind %q: %s must be a function or nil'):format(k, name), 2)
+    end
   end
   dispatch.kind[k] = ops
   row(k)

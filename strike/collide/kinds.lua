@@ -14,8 +14,27 @@ local ray = require(ROOT .. '.collide.ray')
 
 local register = dispatch.register
 
+local cos, sin, pi = math.cos, math.sin, math.pi
+
+-- Drawing a circle (strike/draw.lua calls these with love.graphics): the circle, or a
+-- point for radius 0; eight normals around it.
+local function circleOutline(g, s, mode)
+  local x, y = s:getCentroid()
+  local r = s:getRadius()
+  if r > 0 then g.circle(mode, x, y, r) else g.points(x, y) end
+end
+
+local function circleNormals(g, s, len)
+  local x, y = s:getCentroid()
+  local r = s:getRadius()
+  for k = 0, 7 do
+    local nx, ny = cos(k * pi / 4), sin(k * pi / 4)
+    g.line(x + nx * r, y + ny * r, x + nx * (r + len), y + ny * (r + len))
+  end
+end
+
 dispatch.registerKind('polygon', { ray = ray.vertexShape })
-dispatch.registerKind('circle', { ray = ray.circle })
+dispatch.registerKind('circle', { ray = ray.circle, outline = circleOutline, normals = circleNormals })
 dispatch.registerKind('chain', { ray = ray.segment })
 
 register('polygon', 'polygon', { collide = sat.polygonPolygon, contact = contact.polygons })
