@@ -18,7 +18,7 @@ local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
 
 local describe, what, fail = check.describe, check.what, check.fail
-local root = Shape._rootOf
+local root, collide = Shape._rootOf, compound.collide
 
 ---@class strike
 local S = {
@@ -44,7 +44,7 @@ end
 -- has a leaf cache (see colliders/Collider.lua); both tests read fields the hot paths read
 -- anyway. Everything else gets an error naming the argument.
 local function isShape(v) return v._pose ~= nil and pair[v.kind] ~= nil end
-local function isCollider(v) return v._single ~= nil and v.type == 'collider' end
+local function isCollider(v) return v._single ~= nil end
 
 local function badShape(fname, i, v)
   if type(v) == 'table' then
@@ -77,11 +77,6 @@ local function badOut(fname, out, i)
   fail(('%s: argument %d (out) must be a table such as S.MTV(), got %s'):format(fname, i, what(out)))
 end
 
--- An `out` argument: nil, or a table that is not a shape or a collider.
-local function checkOut(fname, out, i)
-  if out ~= nil and (type(out) ~= 'table' or (out.type ~= nil and out.type ~= 'mtv')) then badOut(fname, out, i) end
-end
-
 --- Separating-axis test between two convex shapes. Always returns an MTV (filled into
 --- `out` when given); check `mtv.separating`. The vector points from shape1 toward shape2.
 ---@param shape1 strike.Shape
@@ -89,7 +84,8 @@ end
 ---@param out strike.MTV|nil
 ---@return strike.MTV
 function S.AT(shape1, shape2, out)
-  -- (the checks of isShape and checkOut, inlined: this is the hottest entry point)
+  -- (isShape, inlined: this is the hottest entry point; `out` may be nil or a table that
+  -- is not one of strike's objects other than an MTV)
   if type(shape1) ~= 'table' or shape1._pose == nil or not pair[shape1.kind] then badShape('strike.AT', 1, shape1) end
   if type(shape2) ~= 'table' or shape2._pose == nil or not pair[shape2.kind] then badShape('strike.AT', 2, shape2) end
   local ops = pair[shape1.kind][shape2.kind]
@@ -117,14 +113,19 @@ end
 ---@param out strike.MTV|nil filled and returned on a collision; its contents are unspecified after false
 ---@return strike.MTV|false
 function S.triking(collider1, collider2, out)
-  if type(collider1) ~= 'table' or not (isCollider(collider1) or isShape(collider1)) then
-    badBody('strike.triking', 1, collider1)
+  -- (isCollider, isShape and the `out` check of S.AT, inlined: a hot entry point; a
+  -- collider's own `_single` field tells it from a shape without a lookup in its class)
+  local c1, c2 = collider1, collider2
+  if type(c1) ~= 'table' or (c1._single == nil and (c1._pose == nil or not pair[c1.kind])) then
+    badBody('strike.triking', 1, c1)
   end
-  if type(collider2) ~= 'table' or not (isCollider(collider2) or isShape(collider2)) then
-    badBody('strike.triking', 2, collider2)
+  if type(c2) ~= 'table' or (c2._single == nil and (c2._pose == nil or not pair[c2.kind])) then
+    badBody('strike.triking', 2, c2)
   end
-  if out ~= nil then checkOut('strike.triking', out, 3) end
-  return compound.collide(collider1, collider2, out)
+  if out ~= nil and (type(out) ~= 'table' or (out.type ~= 'mtv' and out.type ~= nil)) then
+    badOut('strike.triking', out, 3)
+  end
+  return collide(collider1, collider2, out)
 end
 
 local scratch = MTV() -- S.ite's re-test of shapes that moved
