@@ -5,20 +5,23 @@ local ROOT = (...):match('^(.-)%.shapes%.[^%.]+$')
 local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
 local layout = require(ROOT .. '.base.layout')
+local limits = require(ROOT .. '.limits')
 
 local X, Y, R = layout.X, layout.Y, layout.R
 local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
 
 local sqrt, pi = math.sqrt, math.pi
 local number, positive = check.number, check.positive
+local MIN_LENGTH, MAX_LENGTH = limits.MIN_LENGTH, limits.MAX_LENGTH
 
 ---@class strike.Circle : strike.Shape
 local Circle = Shape:extend()
 Circle.kind = 'circle'
 Circle.name = 'Circle'
+Circle._shortName = 'radius'
 
---- A circle centred on (x, y) with radius r (> 0), turned by `angle` (default 0; the angle
---- only matters to getAngle and to drawing).
+--- A circle centred on (x, y) with radius r (from 1e-100 to 1e100: strike/limits.lua), turned
+--- by `angle` (default 0; the angle only matters to getAngle and to drawing).
 ---@param x number
 ---@param y number
 ---@param r number
@@ -28,11 +31,20 @@ function Circle:new(x, y, r, angle)
   number(y, 'strike.Circle', 'y')
   positive(r, 'strike.Circle', 'radius')
   angle = check.optNumber(angle, 'strike.Circle', 'angle', 0)
-  if not check.finite(pi * r * r) then check.fail('strike.Circle: radius too large') end
+  -- (the test Shape:_checkNew makes, in the circle's words: see strike/limits.lua)
+  if r > MAX_LENGTH then
+    check.fail(('strike.Circle: radius too large: got %s, above %s, the largest length strike accepts'):format(
+      check.describe(r), check.describe(MAX_LENGTH)))
+  end
+  if r < MIN_LENGTH then
+    check.fail(('strike.Circle: radius too small: got %s, below %s, the smallest length strike accepts (its square'
+      .. ' must stay a normal double)'):format(check.describe(r), check.describe(MIN_LENGTH)))
+  end
   self._r = r
   self._area = pi * r * r
-  self._radius = r
+  self._radius, self._short = r, r
   self:_setPose(x, y)
+  self:_checkNew('strike.Circle')
   if angle ~= 0 then self:rotate(angle) end
 end
 
