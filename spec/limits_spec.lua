@@ -8,7 +8,7 @@ local ChainSegment = require('strike.base.ChainSegment')
 
 local near, nearList, raisesAt = expect.near, expect.nearList, expect.raisesAt
 local H, T = S.hapes, S.trikers
-local abs = math.abs
+local abs, sqrt = math.abs, math.sqrt
 
 -- |n|^2 within 1e-12 of 1
 local function unit(nx, ny, what)
@@ -150,6 +150,80 @@ describe('tiny geometry', function()
     nearList({ p:getCentroid() }, { 1e-200, 0 }, 0)
     raisesAt(function() H.Point(0, 0):scale(1e-200):scale(1e-200):scale(1e-200) end, 'the scale would underflow to 0')
     raisesAt(function() H.Point(0, 0):scale(1e200):scale(1e200) end, 'strike.Shape:scale: the scale would overflow')
+  end)
+end)
+
+describe('unit normals at run time', function()
+  local function mtvUnit(m, what)
+    unit(m.nx, m.ny, what)
+    return m
+  end
+
+  it('two circles 1e-160 apart (nx was 1.0000056)', function()
+    local m = mtvUnit(S.AT(H.Circle(0, 0, 1), H.Circle(1e-160, 0, 1)))
+    nearList({ m.nx, m.ny, m.depth }, { 1, 0, 2 }, 1e-15)
+    m = mtvUnit(S.AT(H.Circle(0, 0, 1e-100), H.Circle(1e-160, 1e-160, 1e-100)))
+    nearList({ m.nx, m.ny }, { sqrt(0.5), sqrt(0.5) }, 1e-15)
+    local contacts = S.ite(m)
+    unit(contacts.nx, contacts.ny, 'S.ite')
+    m = mtvUnit(S.triking(T.Circle(0, 0, 1), T.Circle(-3e-170, 4e-170, 1)))
+    nearList({ m.nx, m.ny }, { -0.6, 0.8 }, 1e-15)
+  end)
+
+  it('points and circles scaled down with scale(1e-200), or a point against a circle', function()
+    local a, b = H.Point(0, 0), H.Point(1, 1):scale(1e-200, 0, 0)
+    local m = mtvUnit(S.AT(a, b))
+    nearList({ m.nx, m.ny }, { sqrt(0.5), sqrt(0.5) }, 1e-15)
+    assert.is_true(m.separating)
+    m = mtvUnit(S.AT(H.Point(0, 0), H.Point(-1e-300, 1e-300)))
+    nearList({ m.nx, m.ny }, { -sqrt(0.5), sqrt(0.5) }, 1e-15)
+    m = mtvUnit(S.AT(H.Point(0, 0), H.Circle(1e-160, 1e-160, 1)))
+    assert.is_false(m.separating)
+    nearList({ m.nx, m.ny, m.depth }, { sqrt(0.5), sqrt(0.5), 1 }, 1e-15)
+    unit(S.ite(m).nx, S.ite(m).ny, 'S.ite')
+    m = mtvUnit(S.AT(H.Circle(1e-160, 1e-160, 1), H.Point(0, 0)))
+    nearList({ m.nx, m.ny }, { -sqrt(0.5), -sqrt(0.5) }, 1e-15)
+    -- the same circles scaled about a common point: their distance scales, their radii too
+    local c1, c2 = H.Circle(0, 0, 1e50), H.Circle(3e50, 4e50, 1e50)
+    c1:scale(1e-149, 0, 0)
+    c2:scale(1e-149, 0, 0)
+    m = mtvUnit(S.AT(c1, c2))
+    nearList({ m.nx, m.ny }, { 0.6, 0.8 }, 1e-15)
+  end)
+
+  it('a circle in a polygon\'s vertex region 1e-160 from the vertex (sat.lua divided by an underflowed sqrt)',
+    function()
+      local box = H.Rectangle(-1, -1, 2) -- a vertex at (0, 0)
+      local m = mtvUnit(S.AT(box, H.Circle(1e-160, 2e-160, 1)))
+      nearList({ m.nx, m.ny }, { 1 / sqrt(5), 2 / sqrt(5) }, 1e-15)
+      assert.equals(0, m.edgeIndex)
+      unit(S.ite(m).nx, S.ite(m).ny, 'S.ite')
+      m = mtvUnit(S.AT(H.Circle(3e-200, 4e-200, 1), box))
+      nearList({ m.nx, m.ny }, { -0.6, -0.8 }, 1e-15)
+      m = mtvUnit(S.triking(T.Circle(1e-300, -1e-300, 0.5), T.Rectangle(-1, 1, 2)))
+      nearList({ m.nx, m.ny }, { -sqrt(0.5), sqrt(0.5) }, 1e-15)
+    end)
+
+  it('shapes so far apart that the square of their distance overflows (the normal was (0, 0))', function()
+    local m = mtvUnit(S.AT(H.Edge(0, 0, 1, 0), H.Circle(1e300, 0, 1)))
+    nearList({ m.nx, m.ny }, { 1, 0 })
+    assert.is_true(m.separating)
+    m = mtvUnit(S.AT(H.Circle(-1e300, 0, 1), H.Circle(1e300, 0, 1)))
+    nearList({ m.nx, m.ny }, { 1, 0 })
+    m = mtvUnit(S.AT(H.Circle(-1.5e308, 0, 1), H.Circle(1.5e308, 0, 1))) -- (their difference overflows)
+    nearList({ m.nx, m.ny }, { 1, 0 })
+    assert.equals(-math.huge, m.depth)
+    m = mtvUnit(S.AT(H.Point(1e200, 1e200), H.Point(-1e200, -1e200)))
+    nearList({ m.nx, m.ny }, { -sqrt(0.5), -sqrt(0.5) }, 1e-15)
+  end)
+
+  it('MTVs made by hand from tiny or huge vectors', function()
+    local m = S.MTV(1e-200, 0)
+    nearList({ m.nx, m.ny }, { 1, 0 }, 0)
+    unit(S.MTV(1e-160, 1e-160).nx, S.MTV(1e-160, 1e-160).ny)
+    unit(S.MTV(1e308, -1e308).nx, S.MTV(1e308, -1e308).ny)
+    near(S.MTV(3e-200, 4e-200):mag(), 5e-200, 1e-214)
+    nearList({ S.MTV().nx, S.MTV().ny }, { 0, 0 }, 0)
   end)
 end)
 

@@ -130,10 +130,9 @@ local function axisToward(self, other)
     tx, ty = other:getCentroid()
   end
   if not tx then return 0, -1 end
-  local dx, dy = tx - cx, ty - cy
-  local l = sqrt(dx * dx + dy * dy)
-  if l == 0 then return 0, -1 end
-  return dx / l, dy / l
+  local ux, uy = limits.direction(cx, cy, tx, ty) -- (unit however near or far: limits.lua)
+  if not ux then return 0, -1 end
+  return ux, uy
 end
 
 local function circleEdgeIter(state, i)
