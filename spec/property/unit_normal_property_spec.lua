@@ -27,11 +27,19 @@ end
 -- A random shape of any kind (gen's kinds and points) near the origin, then scaled about
 -- the origin by `k` (strike refuses a scale that would take it out of its limits: then
 -- nil and the error).
-local KINDS = { 'rect', 'ngon', 'hull', 'ellipse', 'circle', 'edge', 'point' }
+local KINDS = { 'rect', 'ngon', 'hull', 'ellipse', 'circle', 'edge', 'point', 'chain', 'capsule', 'concave' }
+local BODIES = { chain = true, capsule = true, concave = true } -- (colliders)
 local function makeShape(rng, kind, k)
   local s
+  local x, y, w, h = rng:range(-50, 50), rng:range(-50, 50), gen.logRange(rng, 0.2, 5), gen.logRange(rng, 0.2, 5)
   if kind == 'point' then
-    s = H.Point(rng:range(-50, 50), rng:range(-50, 50))
+    s = H.Point(x, y)
+  elseif kind == 'chain' then
+    s = T.Chain(x, y, x + w, y, x + w, y + h, x + 2 * w, y + h * rng:range(-1, 1), rng:next() < 0.5)
+  elseif kind == 'capsule' then
+    s = T.Capsule(x, y, w, w + h, rng:range(-pi, pi))
+  elseif kind == 'concave' then
+    s = T.Concave(x, y, x + 2 * w, y, x + 2 * w, y + h, x + w, y + h, x + w, y + 2 * h, x, y + 2 * h)
   else
     s = gen.shape(S, rng, kind, rng:range(-50, 50), rng:range(-50, 50))
   end
@@ -84,7 +92,7 @@ local function makeRay(rng, D)
 end
 
 describe('unit normals', function()
-  it('every ray hit of rayCast and segmentCast, on shapes and colliders, of every size and from anywhere',
+  it('every ray hit of rayCast and segmentCast, on shapes, chains, capsules, concave colliders, from anywhere',
     function()
       local rng = PRNG.new(SEED)
       local CASES, hits, refused = 1500, 0, 0
@@ -96,14 +104,16 @@ describe('unit normals', function()
         if not s then
           refused = refused + 1
         else
-          local D = brute.of(s)
+          local body = BODIES[kind]
+          local D = brute.of(body and s.shapes[rng:int(1, #s.shapes)] or s) -- (a body: rays at one of its leaves)
           local ox, oy, dx, dy, mode, aimed = makeRay(rng, D)
           local c = T.Collider(s:copy())
           local function check(cond, what, t, hx, hy, nx, ny)
             if not cond then
               error(('seed %d case %d (%s, scaled by %s, %s ray from %s, %s along %s, %s): %s gave %s, (%s, %s),'
                 .. ' normal (%s, %s); %s'):format(SEED, case, kind, g(k), mode, g(ox), g(oy), g(dx), g(dy), what,
-                tostring(t), tostring(hx), tostring(hy), tostring(nx), tostring(ny), gen.show(s)), 2)
+                tostring(t), tostring(hx), tostring(hy), tostring(nx), tostring(ny),
+                body and 'a body' or gen.show(s)), 2)
             end
           end
           local function unitHit(what, t, hx, hy, nx, ny)
@@ -119,11 +129,14 @@ describe('unit normals', function()
             unitHit('segmentCast', s:segmentCast(ox, oy, ex, ey))
             unitHit('collider segmentCast', c:segmentCast(ox, oy, ex, ey))
           end
-          local ts, n = s:rayIntersections(ox, oy, dx, dy)
-          for i = 1, n do
-            check(ts[i] >= 0 and ts[i] < huge and (i == 1 or ts[i] >= ts[1]), 'rayIntersections', ts[i])
+          if not body then
+            local ts, n = s:rayIntersections(ox, oy, dx, dy)
+            for i = 1, n do
+              check(ts[i] >= 0 and ts[i] < huge and (i == 1 or ts[i] >= ts[1]), 'rayIntersections', ts[i])
+            end
           end
-          if (mode == 'far' or mode == 'farAxis' or mode == 'interior') and aimed and not (D.circle and D.r == 0) then
+          local aimedMode = mode == 'far' or mode == 'farAxis' or mode == 'interior'
+          if not body and aimedMode and aimed and not (D.circle and D.r == 0) then
             -- aimed at an inner point: a hit, whose normal faces the ray (it enters)
             local t, hx, hy, nx, ny = s:rayCast(ox, oy, dx, dy)
             check(t ~= nil, 'a miss, aimed at an inner point:', t)
@@ -251,27 +264,33 @@ describe('unit normals', function()
   it('a transform refuses exactly what the constructor refuses (away from the limits\' rounding)', function()
     local rng = PRNG.new(SEED + 3)
     local agreed = 0
-    for case = 1, 600 do
+    for case = 1, 700 do
       local w, h, r = pow10(rng, -2, 2), pow10(rng, -2, 2), pow10(rng, -2, 2)
       local k = pow10(rng, -104, 104)
-      local which = case % 4
+      local which = case % 7
       local function build(f)
         if which == 0 then return pcall(H.Rectangle, 0, 0, w * f, h * f) end
         if which == 1 then return pcall(H.Circle, 0, 0, r * f) end
         if which == 2 then return pcall(H.Edge, 0, 0, w * f, h * f) end
-        return pcall(H.RegularPolygon, 0, 0, 6, r * f)
+        if which == 3 then return pcall(H.RegularPolygon, 0, 0, 6, r * f) end
+        if which == 4 then return pcall(T.Capsule, 0, 0, w * f, (w + h) * f) end
+        if which == 5 then return pcall(T.Chain, 0, 0, w * f, 0, w * f, h * f) end
+        return pcall(T.Concave, 0, 0, 2 * w * f, 0, 2 * w * f, h * f, w * f, h * f, w * f, 2 * h * f, 0, 2 * h * f)
       end
       local _, base = build(1)
       local direct = build(k)
       local scaled, err = pcall(base.scale, base, k)
       -- the nearest limit the shape's lengths come to, relative (skip rounding's reach)
-      local short, radius = base._short * k, base._radius * k
-      local margin = min(abs(short / 1e-100 - 1), abs(radius / 1e100 - 1))
+      local margin = huge
+      for _, leaf in ipairs(base.shapes and base.shapes or { base }) do
+        local short, radius = leaf._short * k, leaf._radius * k
+        margin = min(margin, abs(short / 1e-100 - 1), abs(radius / 1e100 - 1))
+      end
       if margin > 1e-9 then
         agreed = agreed + 1
         assert(direct == scaled, ('seed %d case %d: built at %s %s, scaled by %s %s (%s)'):format(SEED + 3, case,
           g(k), direct and 'accepted' or 'refused', g(k), scaled and 'accepted' or 'refused', tostring(err)))
-        if not scaled then assert.equals(1, base:getScale()) end
+        if not scaled then assert.equals(1, (base.shapes and base.shapes[1] or base):getScale()) end
       end
     end
     assert.is_true(agreed > 500)

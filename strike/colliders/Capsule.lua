@@ -44,7 +44,11 @@ function Capsule:new(x, y, dx, dy, angle)
   end
   -- (its members must be shapes strike accepts: see refuse above)
   if dx / 2 < MIN_LENGTH then refuse('width (twice the caps\' radius)', dx, 2 * MIN_LENGTH, true) end
-  if dy / 2 > MAX_LENGTH then refuse('height', dy, 2 * MAX_LENGTH, false) end
+  -- (the largest radius of a member: a cap's, or the rectangle's half diagonal)
+  local size = limits.length(dx, dy - dx) / 2
+  if not (size <= MAX_LENGTH) then -- luacheck: ignore 581 (NaN is too large)
+    refuse('size (the radius of its largest member, the rectangle between the caps)', size, MAX_LENGTH, false)
+  end
   if dy > dx and dy - dx < MIN_LENGTH then
     refuse('straight part (height - width, when not 0)', dy - dx, MIN_LENGTH, true)
   end
