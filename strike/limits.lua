@@ -5,7 +5,8 @@
 --- radius; a point has none) at least MIN_LENGTH, its radius (from the centroid to the
 --- farthest point) at most MAX_LENGTH. Constructors refuse shapes outside that range, and a
 --- transform (a shape's or a collider's scale) refuses to take a shape out of it, with the
---- same test (Shape:_sizeError), so that what a constructor refuses a transform refuses too.
+--- same test (sizeError in base/Shape.lua, run by Shape:_checkNew and Shape._checkPose), so
+--- that what a constructor refuses a transform refuses too.
 --- Why these numbers: the arithmetic that builds a shape squares lengths (edge normals,
 --- areas, the hull's turn test) and multiplies areas by lengths (the area-weighted
 --- centroid), so it needs lengths, squares and cubes to be normal doubles with full
@@ -15,12 +16,13 @@
 --- sums and constant factors.
 ---
 --- Coordinates. Any finite coordinate is accepted as long as |x| + |y| + radius stays finite
---- for the shape's centroid (x, y) (so that projections on a unit vector cannot overflow).
+--- for the shape's centroid (x, y) (so that projections on a unit vector cannot overflow),
+--- by constructors and by every transform (translate, rotate, scale) alike.
 ---
 --- Run time. Distances between shapes are not bounded by any of this: two points may be
 --- 1e-200 apart, two circles 1e308. Normals computed at run time from such a distance use
---- `unit` below when its square is not a normal double in [TINY2, huge) (one comparison
---- more on the common path).
+--- `direction` below when its square is not a normal double in [TINY2, huge) (one
+--- comparison more on the common path). Rays from far away: see collide/ray.lua.
 local limits = {}
 
 local abs, sqrt, huge = math.abs, math.sqrt, math.huge

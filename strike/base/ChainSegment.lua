@@ -34,7 +34,7 @@ local rotate = require(ROOT .. '.vec').rotate
 
 local X, Y = layout.X, layout.Y
 local number, fail, describe = check.number, check.fail, check.describe
-local unit, checkLength = require(ROOT .. '.limits').unit, Edge.checkLength
+local unit, checkLength = require(ROOT .. '.limits').unit, Edge._checkLength
 
 ---@class strike.ChainSegment : strike.Edge
 local ChainSegment = Edge:extend()

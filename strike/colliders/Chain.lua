@@ -16,7 +16,7 @@ local check = require(ROOT .. '.check')
 local unpack = require(ROOT .. '.compat').unpack
 
 local fail, describe = check.fail, check.describe
-local checkLength = require(ROOT .. '.shapes.Edge').checkLength
+local checkLength = require(ROOT .. '.shapes.Edge')._checkLength
 
 ---@class strike.Chain : strike.Collider
 local Chain = Collider:extend()

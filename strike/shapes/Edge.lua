@@ -25,7 +25,7 @@ Edge.name = 'Edge'
 ---@param x2 number
 ---@param y2 number
 ---@param what string|nil
-function Edge.checkLength(fname, x1, y1, x2, y2, what)
+function Edge._checkLength(fname, x1, y1, x2, y2, what)
   local dx, dy = x2 - x1, y2 - y1
   local len = limits.length(dx, dy)
   if dx - dx ~= 0 or dy - dy ~= 0 then len = huge end -- (the difference overflows)
@@ -39,7 +39,7 @@ function Edge.checkLength(fname, x1, y1, x2, y2, what)
       .. ' accepts)'):format(fname, what, describe(len), describe(2 * MAX_LENGTH), describe(MAX_LENGTH)))
   end
 end
-local checkLength = Edge.checkLength
+local checkLength = Edge._checkLength
 
 --- A segment from (x1, y1) to (x2, y2); the endpoints must differ.
 ---@param x1 number
