@@ -332,3 +332,24 @@ describe('rays from far away', function()
     near((H.Rectangle(0, 0, 1):translate(5e307, 0):rayCast(-1e308, 0, 1, 0)), 1.5e308, 1e293)
   end)
 end)
+
+describe('integer coordinates (Lua 5.3+ integers)', function()
+  -- Integer products wrap around past 2^63 where floats would not: strike keeps positions,
+  -- radii and the coordinates its constructors compute with as floats.
+  it('do not wrap around in normals, areas, lengths or rays', function()
+    local m = S.AT(H.Circle(0, 0, 1), H.Circle(5000000000, 0, 1)) -- (nx was 1.95 on Lua 5.3)
+    nearList({ m.nx, m.ny, m.depth }, { 1, 0, 2 - 5000000000 }, 0)
+    m = S.AT(H.Rectangle(0, 0, 2), H.Circle(5000000001, 5000000001, 1))
+    unit(m.nx, m.ny)
+    local p = H.ConvexPolygon(0, 0, 4000000000, 0, 0, 4000000000)
+    assert.equals(8e18, p:getArea())
+    unitNormals(p)
+    assert.equals(5e9, H.Edge(0, 0, 5000000000, 0):getLength())
+    assert.equals(5e9, H.Edge(0, 0, 4000000000, 3000000000):getLength())
+    nearList({ H.Circle(0, 0, 4000000000):rayCast(-8000000000, 0, 1, 0) }, { 4e9, -4e9, 0, -1, 0 }, 0)
+    local big = 4611686018427387904 -- 2^62: the segment's difference, 2^63, is no integer
+    near((H.Rectangle(0, 0, 2):segmentCast(-big, 0, big, 0)), 2 ^ 62 - 1, 2 ^ 12)
+    local c = T.Chain(0, 0, 5000000000, 0, 5000000000, 5000000000)
+    for s in c:elems() do unitNormals(s) end
+  end)
+end)

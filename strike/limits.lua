@@ -47,6 +47,7 @@ limits.TINY2 = 1e-300
 ---@return number uy
 ---@return number length
 function limits.unit(dx, dy)
+  dx, dy = dx + 0.0, dy + 0.0 -- (floats: integer products wrap around on Lua 5.3+)
   local m, ay = abs(dx), abs(dy)
   if ay > m then m = ay end
   if not (m > 0) then return nil end -- luacheck: ignore 581 ((0, 0))
@@ -61,6 +62,7 @@ end
 ---@param dy number
 ---@return number
 function limits.length(dx, dy)
+  dx, dy = dx + 0.0, dy + 0.0 -- (floats: integer products wrap around on Lua 5.3+)
   local d2 = dx * dx + dy * dy
   if d2 >= limits.TINY2 and d2 < huge then return sqrt(d2) end
   local _, _, l = limits.unit(dx, dy)
@@ -79,7 +81,7 @@ end
 ---@return number uy
 ---@return number distance
 function limits.direction(ax, ay, bx, by)
-  local dx, dy = bx - ax, by - ay
+  local dx, dy = (bx + 0.0) - ax, (by + 0.0) - ay
   if dx - dx == 0 and dy - dy == 0 then return limits.unit(dx, dy) end
   local ux, uy, l = limits.unit(bx * 0.5 - ax * 0.5, by * 0.5 - ay * 0.5) -- (halved: no overflow)
   return ux, uy, 2 * l

@@ -74,6 +74,9 @@ function ChainSegment:new(x1, y1, x2, y2, x0, y0, x3, y3)
   local hasPrev, hasNext = optGhost(x0, y0, 'previous point'), optGhost(x3, y3, 'next point')
   if hasPrev and x0 == x1 and y0 == y1 then fail(FNAME .. ': the previous point must differ from p1') end
   if hasNext and x3 == x2 and y3 == y2 then fail(FNAME .. ': the next point must differ from p2') end
+  x1, y1, x2, y2 = x1 + 0.0, y1 + 0.0, x2 + 0.0, y2 + 0.0 -- (floats: integer arithmetic wraps on Lua 5.3+)
+  if hasPrev then x0, y0 = x0 + 0.0, y0 + 0.0 end
+  if hasNext then x3, y3 = x3 + 0.0, y3 + 0.0 end
   -- (the neighbouring segments must be segments strike accepts too: strike/limits.lua)
   checkLength(FNAME, x1, y1, x2, y2)
   if hasPrev then checkLength(FNAME, x0, y0, x1, y1, 'previous segment (previous point to p1)') end

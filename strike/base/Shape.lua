@@ -74,7 +74,7 @@ function Shape:_setPose(x, y)
   for k = 1, layout.HEADER do
     if self[k] == nil then self[k] = 0 end -- (refreshed before any use: the shape starts dirty)
   end
-  self[X], self[Y] = x, y
+  self[X], self[Y] = x + 0.0, y + 0.0 -- (floats: see setPose)
   self._angle, self._cos, self._sin, self._scale = 0, 1, 0, 1
   self._dirty = true
   poses = poses + 1
@@ -85,7 +85,7 @@ end
 --- centre, free of the round-off of the area-weighted centroid). The shape must be dirty.
 ---@param x number
 ---@param y number
-function Shape:_placeCentroid(x, y) self[X], self[Y] = x, y end
+function Shape:_placeCentroid(x, y) self[X], self[Y] = x + 0.0, y + 0.0 end
 
 --- The shortest length of the shape's local geometry (unscaled): a polygon's or an edge's
 --- shortest edge, a circle's radius; 0 when it has none (a point). With `_radius` (the
@@ -147,10 +147,12 @@ end
 local checkPose = Shape._checkPose
 
 -- Commit a new pose if it keeps the shape within strike's limits; otherwise raise an error
--- and leave the shape as it was.
+-- and leave the shape as it was. The position is stored as floats: on Lua 5.3+ integer
+-- coordinates would make every product of them integer arithmetic, which wraps around past
+-- 2^63 (a circle 5e9 away got the normal (1.95, 0)).
 local function setPose(self, x, y, scale, fname)
   checkPose(self, x, y, scale, fname)
-  self[X], self[Y], self._scale = x, y, scale
+  self[X], self[Y], self._scale = x + 0.0, y + 0.0, scale
 end
 
 --- Set the pose to a position and scale already checked (a collider moving its leaves),

@@ -456,7 +456,7 @@ end
 
 -- The unit direction and length of the segment p1 -> p2, or nil when p1 == p2.
 local function segmentRay(x1, y1, x2, y2)
-  local dx, dy = x2 - x1, y2 - y1
+  local dx, dy = (x2 + 0.0) - x1, (y2 + 0.0) - y1 -- (floats: integer differences wrap on Lua 5.3+)
   if dx == 0 and dy == 0 then return nil end
   local k = 1
   if dx - dx ~= 0 or dy - dy ~= 0 then -- the difference overflows: halve first

@@ -40,9 +40,9 @@ function Circle:new(x, y, r, angle)
     check.fail(('strike.Circle: radius too small: got %s, below %s, the smallest length strike accepts (its square'
       .. ' must stay a normal double)'):format(check.describe(r), check.describe(MIN_LENGTH)))
   end
-  self._r = r
+  self._r = r + 0.0 -- (a float: r * r must not be integer arithmetic, which wraps on Lua 5.3+)
   self._area = pi * r * r
-  self._radius, self._short = r, r
+  self._radius, self._short = self._r, self._r
   self:_setPose(x, y)
   self:_checkNew('strike.Circle')
   if angle ~= 0 then self:rotate(angle) end

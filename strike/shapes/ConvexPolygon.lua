@@ -28,6 +28,7 @@ ConvexPolygon.name = 'ConvexPolygon'
 function ConvexPolygon:new(...)
   local fname = self._fname or 'strike.' .. (self.name or 'ConvexPolygon') -- (_fname: see Concave.lua)
   local xs, ys, n = check.coordinates(fname, ...)
+  for i = 1, n do xs[i], ys[i] = xs[i] + 0.0, ys[i] + 0.0 end -- (floats: integer products wrap on Lua 5.3+)
   local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
   for i = 1, n do
     local x, y = xs[i], ys[i]

@@ -26,7 +26,7 @@ Edge.name = 'Edge'
 ---@param y2 number
 ---@param what string|nil
 function Edge._checkLength(fname, x1, y1, x2, y2, what)
-  local dx, dy = x2 - x1, y2 - y1
+  local dx, dy = (x2 + 0.0) - x1, (y2 + 0.0) - y1 -- (floats: integer differences wrap on Lua 5.3+)
   local len = limits.length(dx, dy)
   if dx - dx ~= 0 or dy - dy ~= 0 then len = huge end -- (the difference overflows)
   what = what or 'length'
@@ -54,6 +54,7 @@ function Edge:new(x1, y1, x2, y2)
   if x1 == x2 and y1 == y2 then
     fail(('strike.Edge: the endpoints must differ, got (%s, %s) twice'):format(x1, y1))
   end
+  x1, y1, x2, y2 = x1 + 0.0, y1 + 0.0, x2 + 0.0, y2 + 0.0 -- (floats: integer arithmetic wraps on Lua 5.3+)
   local cx, cy = x1 * 0.5 + x2 * 0.5, y1 * 0.5 + y2 * 0.5
   checkLength('strike.Edge', x1, y1, x2, y2)
   self:_setVertices({ x1, x2 }, { y1, y2 }, 2, cx, cy, 0)
