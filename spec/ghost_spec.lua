@@ -408,7 +408,7 @@ describe('S.trikers.Chain', function()
     raisesAt(function() T.Chain({ 0, 0, 5, 5 }, 'yes') end, 'strike.Chain: loop must be a boolean, got string "yes"')
     raisesAt(function() T.Chain({ 0, 0, 5, 5 }, true, 1) end, 'strike.Chain: expected a table of coordinates')
     raisesAt(function() T.Chain({ 0, 0, 5, math.huge }) end, 'strike.Chain: y2 must be a finite number, got inf')
-    raisesAt(function() T.Chain(-1e308, 0, 1e308, 0) end, 'strike.Chain: coordinates too large')
+    raisesAt(function() T.Chain(-1e308, 0, 1e308, 0) end, 'strike.Chain: too large: its segment 1 is inf')
     raisesAt(function() T.Chain(0, 0, 1, 0):translate(0 / 0, 0) end, 'must be a finite number')
   end)
 

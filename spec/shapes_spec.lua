@@ -78,7 +78,7 @@ describe('ConvexPolygon', function()
   end)
 
   it('rejects coordinates so large that the area overflows', function()
-    raisesAt(function() S.hapes.ConvexPolygon(0, 0, 1e300, 0, 0, 1e300) end, 'coordinates too large')
+    raisesAt(function() S.hapes.ConvexPolygon(0, 0, 1e300, 0, 0, 1e300) end, 'strike.ConvexPolygon: too large')
   end)
 end)
 
@@ -407,7 +407,7 @@ describe('more shape queries', function()
   it('constructors reject every bad argument', function()
     raisesAt(function() S.hapes.Circle(0, 0, 1, 0 / 0) end, 'strike.Circle: angle must be a finite number, got nan')
     raisesAt(function() S.hapes.Circle('0', 0, 1) end, 'strike.Circle: x must be a finite number, got string "0"')
-    raisesAt(function() S.hapes.Edge(0, 0, 1e300, 1e300) end, 'strike.Edge: coordinates too large')
+    raisesAt(function() S.hapes.Edge(0, 0, 1e300, 1e300) end, 'strike.Edge: too large: its length is 1.414')
     raisesAt(function() S.hapes.RegularPolygon(0, nil, 3, 1) end,
       'strike.RegularPolygon: y must be a finite number, got nil')
     raisesAt(function() S.hapes.RegularPolygon(0, 0, 3, 1, {}) end, 'angle must be a finite number, got table')
@@ -425,12 +425,16 @@ describe('huge and degenerate transforms', function()
       'strike.Shape:translate: the result would overflow (coordinates too large)')
     nearList({ r:getCentroid() }, { 1e308, 0 }, 1e300)
     r:translateTo(0, 0)
-    raisesAt(function() r:scale(1e200):scale(1e200) end, 'strike.Shape:scale: the result would overflow')
+    raisesAt(function() r:scale(1e200):scale(1e200) end, 'strike.Shape:scale: the result would be too large')
     raisesAt(function() r:translateTo(0, 0):rotate(math.pi, 1e308, 0) end,
       'strike.Shape:rotate: the result would overflow')
     raisesAt(function() r:scale(1e-200):scale(1e-200):scale(1e-200) end,
-      'strike.Shape:scale: the scale would underflow to 0')
+      'strike.Shape:scale: the result would be too small')
     assert.is_true(r:getScale() > 0)
+    local p = S.hapes.Point(0, 0)
+    raisesAt(function() p:scale(1e-200):scale(1e-200):scale(1e-200) end,
+      'strike.Shape:scale: the scale would underflow to 0')
+    assert.is_true(p:getScale() > 0)
   end)
 
   it('refuse to overflow a collider and move none of its shapes', function()

@@ -33,9 +33,9 @@ local layout = require(ROOT .. '.base.layout')
 local rotate = require(ROOT .. '.vec').rotate
 
 local X, Y = layout.X, layout.Y
-local sqrt = math.sqrt
 local number, fail, describe = check.number, check.fail, check.describe
 local badSelf, type = check.badSelf, type
+local unit, checkLength = require(ROOT .. '.limits').unit, Edge._checkLength
 
 ---@class strike.ChainSegment : strike.Edge
 local ChainSegment = Edge:extend()
@@ -76,23 +76,19 @@ function ChainSegment:new(x1, y1, x2, y2, x0, y0, x3, y3)
   local hasPrev, hasNext = optGhost(x0, y0, 'previous point'), optGhost(x3, y3, 'next point')
   if hasPrev and x0 == x1 and y0 == y1 then fail(FNAME .. ': the previous point must differ from p1') end
   if hasNext and x3 == x2 and y3 == y2 then fail(FNAME .. ': the next point must differ from p2') end
-  for _, v in ipairs({ x2 - x1, y2 - y1, hasPrev and x1 - x0 or 0, hasPrev and y1 - y0 or 0,
-    hasNext and x3 - x2 or 0, hasNext and y3 - y2 or 0 }) do
-    if not check.finite(v * v) then fail(FNAME .. ': coordinates too large') end
-  end
-  if not check.finite((x1 + x2) / 2) or not check.finite((y1 + y2) / 2) then
-    fail(FNAME .. ': coordinates too large')
-  end
+  x1, y1, x2, y2 = x1 + 0.0, y1 + 0.0, x2 + 0.0, y2 + 0.0 -- (floats: integer arithmetic wraps on Lua 5.3+)
+  if hasPrev then x0, y0 = x0 + 0.0, y0 + 0.0 end
+  if hasNext then x3, y3 = x3 + 0.0, y3 + 0.0 end
+  -- (the neighbouring segments must be segments strike accepts too: strike/limits.lua)
+  checkLength(FNAME, x1, y1, x2, y2)
+  if hasPrev then checkLength(FNAME, x0, y0, x1, y1, 'previous segment (previous point to p1)') end
+  if hasNext then checkLength(FNAME, x2, y2, x3, y3, 'next segment (p2 to the next point)') end
   Edge.new(self, x1, y1, x2, y2)
   local cx, cy = self:getCentroid()
-  local ex, ey = x2 - x1, y2 - y1
-  local l = sqrt(ex * ex + ey * ey)
-  ex, ey = ex / l, ey / l
+  local ex, ey = unit(x2 - x1, y2 - y1)
   self._hasPrev, self._hasNext = hasPrev, hasNext
   if hasPrev then
-    local dx, dy = x1 - x0, y1 - y0
-    local d = sqrt(dx * dx + dy * dy)
-    dx, dy = dx / d, dy / d
+    local dx, dy = unit(x1 - x0, y1 - y0)
     self._lprevx, self._lprevy = x0 - cx, y0 - cy
     self._lg1x, self._lg1y = dy, -dx
     self._convex1 = dx * ey - dy * ex > 0
@@ -101,9 +97,7 @@ function ChainSegment:new(x1, y1, x2, y2, x0, y0, x3, y3)
     self._convex1 = true
   end
   if hasNext then
-    local dx, dy = x3 - x2, y3 - y2
-    local d = sqrt(dx * dx + dy * dy)
-    dx, dy = dx / d, dy / d
+    local dx, dy = unit(x3 - x2, y3 - y2)
     self._lnextx, self._lnexty = x3 - cx, y3 - cy
     self._lg2x, self._lg2y = dy, -dx
     self._convex2 = ex * dy - ey * dx > 0

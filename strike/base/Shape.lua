@@ -13,11 +13,13 @@ local Object = require(ROOT .. '.class')
 local check = require(ROOT .. '.check')
 local layout = require(ROOT .. '.base.layout')
 local vec = require(ROOT .. '.vec')
+local limits = require(ROOT .. '.limits')
 local kinds = require(ROOT .. '.collide.dispatch').kind
 
 local X, Y = layout.X, layout.Y
 local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
-local cos, sin, abs = math.cos, math.sin, math.abs
+local cos, sin, abs, huge = math.cos, math.sin, math.abs, math.huge
+local MIN_LENGTH, MAX_LENGTH = limits.MIN_LENGTH, limits.MAX_LENGTH
 local rotate = vec.rotate
 local number, positive, optPoint, finite, fail = check.number, check.positive, check.optPoint, check.finite,
   check.fail
@@ -75,7 +77,7 @@ function Shape:_setPose(x, y)
   for k = 1, layout.HEADER do
     if self[k] == nil then self[k] = 0 end -- (refreshed before any use: the shape starts dirty)
   end
-  self[X], self[Y] = x, y
+  self[X], self[Y] = x + 0.0, y + 0.0 -- (floats: see setPose)
   self._angle, self._cos, self._sin, self._scale = 0, 1, 0, 1
   self._dirty = true
   poses = poses + 1
@@ -86,16 +88,74 @@ end
 --- centre, free of the round-off of the area-weighted centroid). The shape must be dirty.
 ---@param x number
 ---@param y number
-function Shape:_placeCentroid(x, y) self[X], self[Y] = x, y end
+function Shape:_placeCentroid(x, y) self[X], self[Y] = x + 0.0, y + 0.0 end
 
--- Commit a new pose if every world coordinate it implies stays finite; otherwise raise an
--- error and leave the shape as it was.
-local function setPose(self, x, y, scale, fname)
-  if not finite(abs(x) + abs(y) + self._radius * scale) then
+--- The shortest length of the shape's local geometry (unscaled): a polygon's or an edge's
+--- shortest edge, a circle's radius; 0 when it has none (a point). With `_radius` (the
+--- largest distance from the centroid), what strike's size limits apply to (limits.lua).
+Shape._short = 0
+--- What `_short` measures, for error messages.
+Shape._shortName = 'shortest length'
+
+-- Why the shape at this scale is outside strike's limits on lengths (limits.lua), or nil.
+-- `is` is the verb of the message ('is', 'would be').
+local function sizeError(self, scale, is)
+  local size = self._radius * scale
+  if not (size <= MAX_LENGTH) then -- luacheck: ignore 581 (NaN is too large)
+    return ('too large: its radius (from the centroid to the farthest point) %s %s, above %s, the largest'
+      .. ' length strike accepts'):format(is, check.describe(size), check.describe(MAX_LENGTH))
+  end
+  local short = self._short * scale
+  if short < MIN_LENGTH and self._short > 0 then
+    return ('too small: its %s %s %s, below %s, the smallest length strike accepts (its square must stay a'
+      .. ' normal double)'):format(self._shortName, is, check.describe(short), check.describe(MIN_LENGTH))
+  end
+  return nil
+end
+
+--- Raise an error at the caller's line unless a newly built shape (pose at scale 1) is
+--- within strike's limits (limits.lua): lengths from MIN_LENGTH to MAX_LENGTH, and
+--- |x| + |y| + radius finite. Constructors call it once the geometry is set; a transform
+--- applies the same test to the pose it would make (Shape._checkPose).
+---@param fname string the constructor's name, for the message
+function Shape:_checkNew(fname)
+  local err = sizeError(self, 1, 'is')
+  if err then fail(fname .. ': ' .. err) end
+  if not finite(abs(self[X]) + abs(self[Y]) + self._radius) then
+    fail(fname .. ': coordinates too large (|x| + |y| + radius must stay finite)')
+  end
+end
+
+--- Raise an error at the caller's line unless the pose (x, y, scale) keeps the shape within
+--- strike's limits, as its constructor would demand (see Shape:_checkNew): every world
+--- coordinate finite, and, when the scale changes, every length from MIN_LENGTH to
+--- MAX_LENGTH (the area, at most about the radius squared, then stays finite too).
+--- `fname` names the transform. Changes nothing.
+---@param s strike.Shape
+---@param x number
+---@param y number
+---@param scale number
+---@param fname string
+function Shape._checkPose(s, x, y, scale, fname)
+  if scale ~= s._scale then
+    if not (scale > 0) then fail(fname .. ': the scale would underflow to 0') end -- luacheck: ignore 581
+    if scale == huge then fail(fname .. ': the scale would overflow') end
+    local err = sizeError(s, scale, 'would be')
+    if err then fail(fname .. ': the result would be ' .. err) end
+  end
+  if not finite(abs(x) + abs(y) + s._radius * scale) then
     fail(fname .. ': the result would overflow (coordinates too large)')
   end
-  if scale <= 0 then fail(fname .. ': the scale would underflow to 0') end
-  self[X], self[Y], self._scale = x, y, scale
+end
+local checkPose = Shape._checkPose
+
+-- Commit a new pose if it keeps the shape within strike's limits; otherwise raise an error
+-- and leave the shape as it was. The position is stored as floats: on Lua 5.3+ integer
+-- coordinates would make every product of them integer arithmetic, which wraps around past
+-- 2^63 (a circle 5e9 away got the normal (1.95, 0)).
+local function setPose(self, x, y, scale, fname)
+  checkPose(self, x, y, scale, fname)
+  self[X], self[Y], self._scale = x + 0.0, y + 0.0, scale
 end
 
 --- Set the pose to a position and scale already checked (a collider moving its leaves),

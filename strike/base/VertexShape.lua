@@ -17,6 +17,7 @@ local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
 local layout = require(ROOT .. '.base.layout')
 local rotate = require(ROOT .. '.vec').rotate
+local limits = require(ROOT .. '.limits')
 
 local MINX, MINY, MAXX, MAXY, R = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY, layout.R
 local X, Y = layout.X, layout.Y
@@ -26,11 +27,13 @@ local BASE = layout.BASE
 local sqrt, huge, abs, floor = math.sqrt, math.huge, math.abs, math.floor
 local number = check.number
 local badSelf, type = check.badSelf, type
+local unit, length, TINY2 = limits.unit, limits.length, limits.TINY2
 
 ---@class strike.VertexShape : strike.Shape
 local VertexShape = Shape:extend()
 VertexShape.kind = 'polygon'
 VertexShape.name = 'VertexShape'
+VertexShape._shortName = 'shortest edge'
 
 -- Normals this close to antiparallel are made exactly antiparallel (a change far below
 -- any coordinate's rounding noise), so that opposite faces can share one projection.
@@ -49,7 +52,8 @@ local function symmetricHalf(l, n)
 end
 
 --- Store world-space vertices xs, ys (count n, positive winding, validated) as local
---- geometry about the centroid (cx, cy), with the given unscaled area.
+--- geometry about the centroid (cx, cy), with the given unscaled area; `_short` gets the
+--- shortest edge (for Shape:_checkNew, which the constructor calls next).
 function VertexShape:_setVertices(xs, ys, n, cx, cy, area)
   local l = {}
   local r2 = 0
@@ -59,18 +63,29 @@ function VertexShape:_setVertices(xs, ys, n, cx, cy, area)
     local d2 = x * x + y * y
     if d2 > r2 then r2 = d2 end
   end
+  local short = huge
   for i = 1, n do
     local k, j = 4 * i - 3, i < n and 4 * i + 1 or 1
     local ex, ey = l[j] - l[k], l[j + 1] - l[k + 1]
-    local len = sqrt(ex * ex + ey * ey)
-    l[k + 2], l[k + 3] = ey / len, -ex / len
+    local len2 = ex * ex + ey * ey
+    if len2 >= TINY2 and len2 < huge then
+      local len = sqrt(len2)
+      l[k + 2], l[k + 3] = ey / len, -ex / len
+    else -- (an edge too short or too long for its square: scaled, still unit; see limits.lua)
+      local nx, ny = unit(ey, -ex)
+      l[k + 2], l[k + 3] = nx or 0, ny or -1
+    end
+    -- the shortest edge, from the coordinates as given (what the constructors check)
+    local m = i < n and i + 1 or 1
+    local e = length(xs[m] - xs[i], ys[m] - ys[i])
+    if e < short then short = e end
   end
   self._n, self._l = n, l
   self._half = symmetricHalf(l, n)
   local size = layout.size(n)
   for k = 1, size do self[k] = 0 end
   for k = #self, size + 1, -1 do self[k] = nil end
-  self._area, self._radius = area, sqrt(r2)
+  self._area, self._radius, self._short = area, sqrt(r2), short
   self:_setPose(cx, cy)
 end
 

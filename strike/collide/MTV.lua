@@ -8,7 +8,7 @@ local Object = require(ROOT .. '.class')
 local check = require(ROOT .. '.check')
 local badSelf, type = check.badSelf, type
 
-local sqrt = math.sqrt
+local limits = require(ROOT .. '.limits')
 
 ---@class strike.MTV : strike.Object
 ---@field x number translation vector, x: normal times depth when colliding; when separating, the
@@ -38,12 +38,13 @@ function MTV:new(dx, dy, colliderShape, collidedShape, separating)
   if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.MTV:new') end
   dx = check.optNumber(dx, 'strike.MTV', 'dx', 0)
   dy = check.optNumber(dy, 'strike.MTV', 'dy', 0)
-  local l = sqrt(dx * dx + dy * dy)
+  local nx, ny, l = limits.unit(dx, dy) -- (unit even for tiny or huge vectors: limits.lua)
+  if not nx then nx, ny, l = 0, 0, 0 end
   separating = separating and true or false
   -- Every field is set, always in this order (false for a missing shape), so that every
   -- MTV has the same table layout: LuaJIT then compiles one trace for all of them.
   self.x, self.y = dx, dy
-  self.nx, self.ny = l > 0 and dx / l or 0, l > 0 and dy / l or 0
+  self.nx, self.ny = nx, ny
   self.depth = separating and -l or l
   self.separating = separating
   self.edgeIndex = 0
@@ -58,7 +59,7 @@ end
 ---@return number
 function MTV:mag()
   if type(self) ~= 'table' or self.type ~= 'mtv' then badSelf(self, 'strike.MTV:mag') end
-  return sqrt(self.x * self.x + self.y * self.y)
+  return limits.length(self.x, self.y)
 end
 
 --- Squared length of the vector.

@@ -29,6 +29,18 @@
 ---
 --- Each kind's kernel (registered in kinds.lua, looked up through dispatch.kind) gives the
 --- interval and the outward unit normals at both of its ends; the queries below pick.
+---
+--- Far origins. A kernel measures from the ray's origin, so its answers have the precision of
+--- the origin's distance: from x = -1e300, every face of a unit square is entered at "1e300",
+--- and the interval's ends tie or cross at random (such a ray missed a diamond it went
+--- through). A ray whose origin is more than FAR (2^20) times the shape's radius from the
+--- shape's centroid is therefore first moved along itself to two radii before the point
+--- nearest the centroid; the kernel works from there, at the shape's scale, and the
+--- distances are the move plus the kernel's. The move is exact for axis-aligned rays; for
+--- others it is off by a rounding of the distance, which is the precision the direction
+--- itself has that far away (the answer is exact for a direction that differs from the
+--- given one by a rounding). Every hit has a unit normal; a hit whose distance would exceed
+--- the largest double is not reported (a miss), by every ray query alike.
 local ROOT = (...):match('^(.-)%.collide%.[^%.]+$')
 local check = require(ROOT .. '.check')
 local layout = require(ROOT .. '.base.layout')
@@ -40,6 +52,10 @@ local BASE = layout.BASE
 local P1, P2 = layout.base(1), layout.base(2)
 
 local sqrt, abs, huge = math.sqrt, math.abs, math.huge
+
+-- Far origins (see the header): a ray whose origin is more than FAR times the shape's
+-- radius from its centroid is moved close to the shape first.
+local FAR = 2 ^ 20
 local finite, fail, describe, number = check.finite, check.fail, check.describe, check.number
 
 local ray = {}
@@ -228,14 +244,13 @@ function ray.vertexShape(s, ox, oy, ux, uy)
   return polygonClip(s, ox, oy, ux, uy)
 end
 
--- The outward unit normal of a circle centred on (cx, cy) at the point o + t u: the
--- direction from the centre, scaled before it is squared so that tiny or huge circles
--- still give a unit vector; `sign` * u when the point is the centre (a circle of radius 0).
-local function circleNormal(cx, cy, ox, oy, ux, uy, t, sign)
-  local hx, hy = ox + t * ux - cx, oy + t * uy - cy
+-- The outward unit normal of a circle along (hx, hy), the hit point relative to the centre,
+-- scaled before it is squared so that tiny or huge circles still give a unit vector; -u
+-- when it is the zero vector (a circle of radius 0: a point, whose normal faces the ray).
+local function circleNormal(hx, hy, ux, uy)
   local m = abs(hx)
   if abs(hy) > m then m = abs(hy) end
-  if not (m > 0) or m == huge then return sign * ux, sign * uy end -- luacheck: ignore 581
+  if not (m > 0) or m == huge then return -ux, -uy end -- luacheck: ignore 581
   hx, hy = hx / m, hy / m
   local l = sqrt(hx * hx + hy * hy)
   return hx / l, hy / l
@@ -243,7 +258,9 @@ end
 
 --- The ray against a circle: lo, hi (lo <= hi, hi >= 0) and the outward unit normals there,
 --- or nil when the ray misses. A circle of radius 0 (a point) is hit only by a ray through
---- it; its normal faces the ray (-u).
+--- it; its normal faces the ray (-u). The hit points relative to the centre are taken as
+--- p -+ sqrt(disc) u, with p the centre's nearest point of the line, rather than as
+--- o + t u - centre, which cancels when the origin is far away.
 ---@param s strike.Circle
 ---@param ox number
 ---@param oy number
@@ -265,13 +282,15 @@ function ray.circle(s, ox, oy, ux, uy)
   local px, py = mx - b * ux, my - b * uy -- from the centre to the nearest point of the line
   local disc = r * r - (px * px + py * py)
   if not (disc >= 0) then return nil end -- luacheck: ignore 581 (NaN reads as a miss)
-  local t1, t2
+  if r == 0 and (px ~= 0 or py ~= 0) then return nil end -- (a point: p * p may have underflowed)
+  local t1, t2, root
   if disc == 0 then
-    t1 = -b
+    t1, root = -b, 0
     t2 = t1
   else
+    root = sqrt(disc)
     local q
-    if b >= 0 then q = -(b + sqrt(disc)) else q = sqrt(disc) - b end
+    if b >= 0 then q = -(b + root) else q = root - b end
     t1 = q
     if c < huge then
       t2 = c / q
@@ -281,9 +300,38 @@ function ray.circle(s, ox, oy, ux, uy)
     if t1 > t2 then t1, t2 = t2, t1 end
   end
   if not (t2 >= 0) or t2 == huge then return nil end -- luacheck: ignore 581 (NaN reads as a miss)
-  local nxLo, nyLo = circleNormal(cx, cy, ox, oy, ux, uy, t1, -1)
-  local nxHi, nyHi = circleNormal(cx, cy, ox, oy, ux, uy, t2, -1)
+  local nxLo, nyLo = circleNormal(px - root * ux, py - root * uy, ux, uy)
+  local nxHi, nyHi = circleNormal(px + root * ux, py + root * uy, ux, uy)
   return t1, t2, nxLo, nyLo, nxHi, nyHi
+end
+
+-- Where span's kernel measured from: the point (shiftX, shiftY), at distance shiftT along
+-- the ray from its origin (0 and the origin itself unless the origin is far).
+local shiftT, shiftX, shiftY = 0, 0, 0
+-- shiftT as the unrounded sum shiftFar + shiftNear: the long move, then the short one.
+local shiftFar, shiftNear = 0, 0
+-- The distance of the last hit ray.cast reported, as the unrounded sum castFar + castNear.
+local castFar, castNear = 0, 0
+
+-- The kernel's answer for the ray on shape s, measured from (shiftX, shiftY) (set here).
+-- A ray whose origin is more than FAR radii from the shape's centroid is first moved along
+-- itself to two radii before the point nearest the centroid (see "Far origins" in the
+-- header); nil when it cannot reach the shape, or when the hit's distance would exceed the
+-- largest double.
+local function span(s, ox, oy, ux, uy)
+  local dx, dy = s[X] - ox, s[Y] - oy
+  local rad = s._radius * s._scale
+  if not (abs(dx) + abs(dy) > FAR * rad) or rad == 0 then -- luacheck: ignore 581 (inf is far)
+    shiftT, shiftX, shiftY, shiftFar, shiftNear = 0, ox, oy, 0, 0
+    return kinds[s.kind].ray(s, ox, oy, ux, uy)
+  end
+  local t0 = dx * ux + dy * uy -- (far away: no point of the shape is within 2 radii of the origin)
+  if not (t0 > 2 * rad) or t0 == huge then return nil end -- luacheck: ignore 581 (behind, or overflowed)
+  local px, py = ox + t0 * ux, oy + t0 * uy -- near the centroid, within a rounding of t0
+  local t1 = (s[X] - px) * ux + (s[Y] - py) * uy - 2 * rad -- (at the shape's scale: exact enough)
+  px, py = px + t1 * ux, py + t1 * uy
+  shiftT, shiftX, shiftY, shiftFar, shiftNear = t0 + t1, px, py, t0, t1
+  return kinds[s.kind].ray(s, px, py, ux, uy)
 end
 
 --- The interval lo, hi of the ray inside any shape, and the normals at its ends (see the
@@ -300,14 +348,24 @@ end
 ---@return number nxHi
 ---@return number nyHi
 function ray.clip(s, ox, oy, ux, uy)
-  return kinds[s.kind].ray(s, ox, oy, ux, uy)
+  local lo, hi, nxLo, nyLo, nxHi, nyHi = span(s, ox, oy, ux, uy)
+  if lo and shiftT ~= 0 then
+    lo, hi = lo + shiftT, hi + shiftT
+    if hi == huge then return nil end -- (beyond the largest double)
+  end
+  return lo, hi, nxLo, nyLo, nxHi, nyHi
 end
 local clip = ray.clip
 
 -- Fill `ts` (a table, or nil for a new one) with the hits of the ray, unit direction:
 -- ts, n; or nil, 0 (and `ts` emptied) when there is none.
 local function fill(s, ox, oy, ux, uy, ts)
-  local lo, hi = clip(s, ox, oy, ux, uy)
+  local lo, hi = span(s, ox, oy, ux, uy)
+  local two = lo and hi ~= lo -- (decided at the shape's scale: far away both may round alike)
+  if lo and shiftT ~= 0 then
+    lo, hi = lo + shiftT, hi + shiftT
+    if hi == huge then lo = nil end -- (beyond the largest double)
+  end
   if not lo then
     if ts then
       for i = #ts, 1, -1 do ts[i] = nil end
@@ -320,7 +378,7 @@ local function fill(s, ox, oy, ux, uy, ts)
   if lo >= 0 then
     if lo == 0 then lo = 0.0 end
     ts[1] = lo
-    if hi ~= lo then
+    if two then
       ts[2] = hi
       n = 2
     end
@@ -372,13 +430,15 @@ end
 ---@param maxDistance number
 ---@return number|nil distance, number x, number y, number nx, number ny
 function ray.cast(s, ox, oy, ux, uy, maxDistance)
-  local lo, hi, nxLo, nyLo, nxHi, nyHi = kinds[s.kind].ray(s, ox, oy, ux, uy)
+  local lo, hi, nxLo, nyLo, nxHi, nyHi = span(s, ox, oy, ux, uy)
   if not lo then return nil end
   local t, nx, ny = lo, nxLo, nyLo
-  if lo < 0 then t, nx, ny = hi, nxHi, nyHi end
-  if t > maxDistance then return nil end
-  if t == 0 then t = 0.0 end
-  return t, ox + t * ux, oy + t * uy, nx, ny
+  if lo + shiftT < 0 then t, nx, ny = hi, nxHi, nyHi end
+  local d = t + shiftT -- (the distance from the ray's own origin)
+  if d > maxDistance or d == huge then return nil end
+  castFar, castNear = shiftFar, shiftNear + t
+  if d == 0 then d = 0.0 end
+  return d, shiftX + t * ux, shiftY + t * uy, nx, ny
 end
 local cast = ray.cast
 
@@ -397,7 +457,7 @@ end
 
 -- The unit direction and length of the segment p1 -> p2, or nil when p1 == p2.
 local function segmentRay(x1, y1, x2, y2)
-  local dx, dy = x2 - x1, y2 - y1
+  local dx, dy = (x2 + 0.0) - x1, (y2 + 0.0) - y1 -- (floats: integer differences wrap on Lua 5.3+)
   if dx == 0 and dy == 0 then return nil end
   local k = 1
   if dx - dx ~= 0 or dy - dy ~= 0 then -- the difference overflows: halve first
@@ -467,11 +527,15 @@ end
 -- the first leaf in order.
 local function leavesCast(leaves, n, ox, oy, ux, uy, maxDistance)
   local bt, bx, by, bnx, bny, best
+  local bFar, bNear = 0, 0 -- the best hit's distance as the unrounded sum bFar + bNear
   for i = 1, n do
     local s = leaves[i]
     local t, hx, hy, nx, ny = cast(s, ox, oy, ux, uy, maxDistance)
-    if t and (not best or t < bt) then
+    -- (equal distances may differ below their rounding when the origin is far: compare the
+    -- unrounded sums, so that the nearer leaf still wins)
+    if t and (not best or t < bt or (t == bt and (castFar - bFar) + (castNear - bNear) < 0)) then
       bt, bx, by, bnx, bny, best = t, hx, hy, nx, ny, s
+      bFar, bNear = castFar, castNear
       maxDistance = t
     end
   end

@@ -23,12 +23,14 @@
 --- the dispatch table (dispatch.lua) uses for the reversed order of a pair of kinds.
 local ROOT = (...):match('^(.-)%.collide%.[^%.]+$')
 local layout = require(ROOT .. '.base.layout')
+local limits = require(ROOT .. '.limits')
 
 local sqrt, huge, abs = math.sqrt, math.huge, math.abs
 local X, Y, R = layout.X, layout.Y, layout.R
 local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
 local STRIDE, FIRST, VY, NX, NY, D = layout.STRIDE, layout.FIRST, layout.VY, layout.NX, layout.NY, layout.D
 local BASE = layout.BASE
+local TINY2, direction = limits.TINY2, limits.direction
 
 local sat = {}
 
@@ -228,9 +230,15 @@ local function polygonCircle(P, C, out, flip)
     end
     if vx then
       local dx, dy = cx - vx, cy - vy
-      local d = sqrt(dx * dx + dy * dy)
-      if d > 0 then -- (a centre exactly on the vertex keeps the face normal, depth r)
+      local d2 = dx * dx + dy * dy
+      if d2 >= TINY2 and d2 < huge then
+        local d = sqrt(d2)
         nx, ny, depth, edge = dx / d, dy / d, r - d, 0
+      else -- (a distance whose square is not a normal double: scaled, see strike/limits.lua)
+        local ux, uy, d = direction(vx, vy, cx, cy)
+        if ux then -- (a centre exactly on the vertex keeps the face normal, depth r)
+          nx, ny, depth, edge = ux, uy, r - d, 0
+        end
       end
     end
   end
@@ -255,11 +263,16 @@ function sat.circleCircle(A, B, out)
   if A._dirty then A:_refresh() end
   if B._dirty then B:_refresh() end
   local dx, dy = B[X] - A[X], B[Y] - A[Y]
-  local d = sqrt(dx * dx + dy * dy)
+  local d2 = dx * dx + dy * dy
   local r = A[R] + B[R]
-  if d > 0 then
+  if d2 >= TINY2 and d2 < huge then
+    local d = sqrt(d2)
     return result(out, A, B, dx / d, dy / d, r - d, 0)
   end
+  -- (centres so close or so far apart that the square of their distance is not a normal
+  -- double, or equal: scaled, see strike/limits.lua)
+  local ux, uy, d = direction(A[X], A[Y], B[X], B[Y])
+  if ux then return result(out, A, B, ux, uy, r - d, 0) end
   return result(out, A, B, 0, -1, r, 0)
 end
 

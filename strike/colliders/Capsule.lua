@@ -5,8 +5,20 @@ local Circle = require(ROOT .. '.shapes.Circle')
 local Rectangle = require(ROOT .. '.shapes.Rectangle')
 local check = require(ROOT .. '.check')
 local badSelf, badCollider, type = check.badSelf, check.badCollider, type
+local limits = require(ROOT .. '.limits')
 
 local sqrt, pi = math.sqrt, math.pi
+local MIN_LENGTH, MAX_LENGTH = limits.MIN_LENGTH, limits.MAX_LENGTH
+
+-- Raise an error at the caller's line: `what` (value v) is out of strike's limits on
+-- lengths (strike/limits.lua), below (`least`) or above `bound`. A capsule's members must
+-- be shapes strike accepts: caps of radius dx / 2 and a rectangle dy - dx tall, each
+-- length from MIN_LENGTH to MAX_LENGTH.
+local function refuse(what, v, bound, least)
+  check.fail(('strike.Capsule: %s too %s: got %s, %s %s (strike accepts lengths from %s to %s)'):format(what,
+    least and 'small' or 'large', check.describe(v), least and 'below' or 'above', check.describe(bound),
+    check.describe(MIN_LENGTH), check.describe(MAX_LENGTH)))
+end
 
 ---@class strike.Capsule : strike.Collider
 local Capsule = Collider:extend()
@@ -31,6 +43,16 @@ function Capsule:new(x, y, dx, dy, angle)
   if dy < dx then
     check.fail(('strike.Capsule: height (caps included) must be at least the width, got width %s and height %s')
       :format(dx, dy))
+  end
+  -- (its members must be shapes strike accepts: see refuse above)
+  if dx / 2 < MIN_LENGTH then refuse('width (twice the caps\' radius)', dx, 2 * MIN_LENGTH, true) end
+  -- (the largest radius of a member: a cap's, or the rectangle's half diagonal)
+  local size = limits.length(dx, dy - dx) / 2
+  if not (size <= MAX_LENGTH) then -- luacheck: ignore 581 (NaN is too large)
+    refuse('size (the radius of its largest member, the rectangle between the caps)', size, MAX_LENGTH, false)
+  end
+  if dy > dx and dy - dx < MIN_LENGTH then
+    refuse('straight part (height - width, when not 0)', dy - dx, MIN_LENGTH, true)
   end
   Collider.new(self)
   local r, h = dx / 2, (dy - dx) / 2

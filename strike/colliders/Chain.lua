@@ -15,8 +15,9 @@ local ChainSegment = require(ROOT .. '.base.ChainSegment')
 local check = require(ROOT .. '.check')
 local unpack = require(ROOT .. '.compat').unpack
 
-local fail, describe, finite = check.fail, check.describe, check.finite
 local badSelf, badCollider, type = check.badSelf, check.badCollider, type
+local fail, describe = check.fail, check.describe
+local checkLength = require(ROOT .. '.shapes.Edge')._checkLength
 
 ---@class strike.Chain : strike.Collider
 local Chain = Collider:extend()
@@ -72,12 +73,9 @@ function Chain:new(...)
   if m < need then
     fail(('%s: %s needs at least %d distinct points, got %d'):format(FNAME, loop and 'a loop' or 'a chain', need, m))
   end
-  for i = 1, m do
+  for i = 1, loop and m or m - 1 do -- (each segment's length within strike's limits: limits.lua)
     local j = i < m and i + 1 or 1
-    local dx, dy = px[j] - px[i], py[j] - py[i]
-    if not finite(dx * dx + dy * dy) or not finite((px[i] + px[j]) / 2) or not finite((py[i] + py[j]) / 2) then
-      fail(FNAME .. ': coordinates too large')
-    end
+    checkLength(FNAME, px[i], py[i], px[j], py[j], ('segment %d'):format(i))
   end
   Collider.new(self)
   self._loop = loop

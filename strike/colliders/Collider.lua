@@ -36,8 +36,9 @@ local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
 local unpack = require(ROOT .. '.compat').unpack
 local rotate = require(ROOT .. '.vec').rotate
+local checkPose = Shape._checkPose
 
-local cos, sin, huge, abs = math.cos, math.sin, math.huge, math.abs
+local cos, sin, huge = math.cos, math.sin, math.huge
 local number, positive, optPoint, fail, describe = check.number, check.positive, check.optPoint, check.fail,
   check.describe
 local badSelf, badCollider, type = check.badSelf, check.badCollider, type
@@ -440,18 +441,17 @@ local function scaled(s, sf, rx, ry)
   return rx + (x - rx) * sf, ry + (y - ry) * sf, s._scale * sf
 end
 
--- Give every leaf its new pose (and turn it by `turn`), or, when some leaf would overflow,
--- raise an error at the caller's line before anything moves.
+-- Give every leaf its new pose (and turn it by `turn`), or, when some leaf would leave
+-- strike's limits (overflow, or lengths out of range: the test its constructor and its own
+-- transforms apply, Shape._checkPose), raise an error at the caller's line before anything
+-- moves.
 local function eachLeaf(self, fname, pose, a, b, c, turn)
   if not self._leavesOK then refreshLeaves(self) end
   local leaves, n = self._leaves, self._nleaves
   for i = 1, n do
     local s = leaves[i]
     local x, y, k = pose(s, a, b, c)
-    if not check.finite(abs(x) + abs(y) + s._radius * k) then
-      fail(fname .. ': the result would overflow (coordinates too large)')
-    end
-    if k <= 0 then fail(fname .. ': the scale would underflow to 0') end
+    checkPose(s, x, y, k, fname)
   end
   for i = 1, n do
     local s = leaves[i]

@@ -20,7 +20,14 @@ function Concave:new(...)
   local pieces, err = decompose.decompose(xs, ys, n)
   if not pieces then check.fail('strike.Concave: ' .. err) end
   Collider.new(self)
-  for i = 1, #pieces do self:add(ConvexPolygon(pieces[i])) end
+  for i = 1, #pieces do
+    -- (built as ConvexPolygon(pieces[i]) would be, but an error, such as a piece outside
+    -- strike's limits on lengths, names strike.Concave)
+    local piece = setmetatable({ _fname = 'strike.Concave' }, ConvexPolygon)
+    piece:new(pieces[i])
+    piece._fname = nil
+    self:add(piece)
+  end
 end
 
 return Concave

@@ -6,14 +6,15 @@ local hull = {}
 local sqrt = math.sqrt
 
 -- Relative tolerance for "collinear": |cross(a - o, b - o)| <= EPS * |a - o| * |b - o|,
--- i.e. the sine of the turn is below EPS.
+-- i.e. the sine of the turn is below EPS. (The two lengths are taken apart: the product of
+-- their squares, a fourth power, would overflow or underflow for polygons strike accepts.)
 local EPS = 1e-10
 
 -- Left turn o -> a -> b, strictly beyond the tolerance.
 local function leftTurn(ox, oy, ax, ay, bx, by)
   local ux, uy, vx, vy = ax - ox, ay - oy, bx - ox, by - oy
   local c = ux * vy - uy * vx
-  return c > EPS * sqrt((ux * ux + uy * uy) * (vx * vx + vy * vy))
+  return c > EPS * sqrt(ux * ux + uy * uy) * sqrt(vx * vx + vy * vy)
 end
 
 --- Hull of the points (xs[i], ys[i]), i = 1..n, in positive winding (positive shoelace
@@ -77,7 +78,7 @@ function hull.strictlyInside(hx, hy, h, x, y)
     local ex, ey = hx[j] - hx[i], hy[j] - hy[i]
     local px, py = x - hx[i], y - hy[i]
     local c = ex * py - ey * px
-    if c <= EPS * sqrt((ex * ex + ey * ey) * (px * px + py * py)) then return false end
+    if c <= EPS * sqrt(ex * ex + ey * ey) * sqrt(px * px + py * py) then return false end
   end
   return true
 end

@@ -5,6 +5,7 @@ local ROOT = (...):match('^(.-)%.shapes%.[^%.]+$')
 local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
 local layout = require(ROOT .. '.base.layout')
+local limits = require(ROOT .. '.limits')
 
 local X, Y, R = layout.X, layout.Y, layout.R
 local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
@@ -12,14 +13,16 @@ local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAX
 local sqrt, pi = math.sqrt, math.pi
 local number, positive = check.number, check.positive
 local badSelf, type = check.badSelf, type
+local MIN_LENGTH, MAX_LENGTH = limits.MIN_LENGTH, limits.MAX_LENGTH
 
 ---@class strike.Circle : strike.Shape
 local Circle = Shape:extend()
 Circle.kind = 'circle'
 Circle.name = 'Circle'
+Circle._shortName = 'radius'
 
---- A circle centred on (x, y) with radius r (> 0), turned by `angle` (default 0; the angle
---- only matters to getAngle and to drawing).
+--- A circle centred on (x, y) with radius r (from 1e-100 to 1e100: strike/limits.lua), turned
+--- by `angle` (default 0; the angle only matters to getAngle and to drawing).
 ---@param x number
 ---@param y number
 ---@param r number
@@ -30,11 +33,20 @@ function Circle:new(x, y, r, angle)
   number(y, 'strike.Circle', 'y')
   positive(r, 'strike.Circle', 'radius')
   angle = check.optNumber(angle, 'strike.Circle', 'angle', 0)
-  if not check.finite(pi * r * r) then check.fail('strike.Circle: radius too large') end
-  self._r = r
+  -- (the test Shape:_checkNew makes, in the circle's words: see strike/limits.lua)
+  if r > MAX_LENGTH then
+    check.fail(('strike.Circle: radius too large: got %s, above %s, the largest length strike accepts'):format(
+      check.describe(r), check.describe(MAX_LENGTH)))
+  end
+  if r < MIN_LENGTH then
+    check.fail(('strike.Circle: radius too small: got %s, below %s, the smallest length strike accepts (its square'
+      .. ' must stay a normal double)'):format(check.describe(r), check.describe(MIN_LENGTH)))
+  end
+  self._r = r + 0.0 -- (a float: r * r must not be integer arithmetic, which wraps on Lua 5.3+)
   self._area = pi * r * r
-  self._radius = r
+  self._radius, self._short = self._r, self._r
   self:_setPose(x, y)
+  self:_checkNew('strike.Circle')
   if angle ~= 0 then self:rotate(angle) end
 end
 
@@ -139,10 +151,9 @@ local function axisToward(self, other)
     tx, ty = other:getCentroid()
   end
   if not tx then return 0, -1 end
-  local dx, dy = tx - cx, ty - cy
-  local l = sqrt(dx * dx + dy * dy)
-  if l == 0 then return 0, -1 end
-  return dx / l, dy / l
+  local ux, uy = limits.direction(cx, cy, tx, ty) -- (unit however near or far: limits.lua)
+  if not ux then return 0, -1 end
+  return ux, uy
 end
 
 -- The `other` of ipairs and vecs: nil or a shape.

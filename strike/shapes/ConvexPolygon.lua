@@ -2,6 +2,7 @@
 local ROOT = (...):match('^(.-)%.shapes%.[^%.]+$')
 local VertexShape = require(ROOT .. '.base.VertexShape')
 local check = require(ROOT .. '.check')
+local limits = require(ROOT .. '.limits')
 local hull = require(ROOT .. '.geometry.hull')
 local polygon = require(ROOT .. '.geometry.polygon')
 local unpack = require(ROOT .. '.compat').unpack
@@ -11,6 +12,7 @@ local abs, max = math.abs, math.max
 
 local finite, describe, fail = check.finite, check.describe, check.fail
 local badSelf, type = check.badSelf, type
+local MIN_LENGTH, MAX_LENGTH = limits.MIN_LENGTH, limits.MAX_LENGTH
 
 ---@class strike.ConvexPolygon : strike.VertexShape
 local ConvexPolygon = VertexShape:extend()
@@ -21,12 +23,14 @@ ConvexPolygon.name = 'ConvexPolygon'
 --- winding is positive (positive shoelace area: counter-clockwise with y up, clockwise on
 --- a LÖVE screen), starting from the first point given.
 --- Errors: fewer than 3 distinct non-collinear points, a concave outline (use
---- S.trikers.Concave), or values that are not finite numbers.
+--- S.trikers.Concave), values that are not finite numbers, or a size outside strike's
+--- limits (strike/limits.lua: edges at least 1e-100, radius at most 1e100).
 ---@param ... number|number[]
 function ConvexPolygon:new(...)
   if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.ConvexPolygon:new') end
-  local fname = 'strike.' .. (self.name or 'ConvexPolygon')
+  local fname = self._fname or 'strike.' .. (self.name or 'ConvexPolygon') -- (_fname: see Concave.lua)
   local xs, ys, n = check.coordinates(fname, ...)
+  for i = 1, n do xs[i], ys[i] = xs[i] + 0.0, ys[i] + 0.0 end -- (floats: integer products wrap on Lua 5.3+)
   local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
   for i = 1, n do
     local x, y = xs[i], ys[i]
@@ -35,9 +39,18 @@ function ConvexPolygon:new(...)
     if y < y0 then y0 = y end
     if y > y1 then y1 = y end
   end
-  local d2 = (x1 - x0) * (x1 - x0) + (y1 - y0) * (y1 - y0)
-  if n > 0 and not finite(d2 * d2) then -- the hull's turn test multiplies squared lengths
-    fail(('%s: coordinates too large (their extent overflows)'):format(fname))
+  -- The extent guards the arithmetic of the hull, the area and the centroid (squares and
+  -- cubes of it); Shape:_checkNew then applies strike's limits exactly (limits.lua). A
+  -- polygon whose extent is out of [MIN_LENGTH / 2, 4 * MAX_LENGTH] is out of them anyway
+  -- (its shortest edge is at most 1.5 extents; its radius at least half an extent).
+  local extent = max(x1 - x0, y1 - y0)
+  if n > 0 and not (extent <= 4 * MAX_LENGTH) then -- luacheck: ignore 581 (inf - inf is NaN)
+    fail(('%s: too large: its extent is %s, above %s (its radius must be at most %s, the largest length strike'
+      .. ' accepts)'):format(fname, describe(extent), describe(4 * MAX_LENGTH), describe(MAX_LENGTH)))
+  end
+  if n > 0 and extent > 0 and extent < MIN_LENGTH / 2 then
+    fail(('%s: too small: its extent is %s, below %s (its edges must be at least %s, the smallest length strike'
+      .. ' accepts)'):format(fname, describe(extent), describe(MIN_LENGTH / 2), describe(MIN_LENGTH)))
   end
   local hx, hy, h, distinct = hull.build(xs, ys, n)
   if h < 3 then
@@ -56,10 +69,12 @@ function ConvexPolygon:new(...)
     fail(('%s: coordinates too large or too close together (area %s)'):format(fname, describe(area)))
   end
   self:_setVertices(hx, hy, h, cx, cy, area)
+  self:_checkNew(fname)
 end
 
 --- The union of this polygon and `other` as a new ConvexPolygon when that union is convex
---- (the two touch without overlapping and fill their common hull), else false.
+--- (the two touch without overlapping and fill their common hull) and within strike's limits
+--- on lengths, else false.
 --- Test: interiors disjoint (some face separates them, within a relative 1e-9) and
 --- area(hull of both) = area(self) + area(other) (relative 1e-9).
 ---@param other strike.Shape
@@ -84,7 +99,9 @@ function ConvexPolygon:merge(other)
   if abs(area - sum) > 1e-9 * sum then return false end
   local pts = {}
   for i = 1, h do pts[2 * i - 1], pts[2 * i] = hx[i], hy[i] end
-  return ConvexPolygon(pts)
+  -- (the union may be outside strike's limits on lengths, limits.lua: then it is no merge)
+  local ok, merged = pcall(ConvexPolygon, pts)
+  return ok and merged
 end
 
 --- Arguments that rebuild the polygon as it is now: its world vertices x1, y1, x2, y2, ...

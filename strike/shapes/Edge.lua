@@ -3,13 +3,44 @@
 local ROOT = (...):match('^(.-)%.shapes%.[^%.]+$')
 local VertexShape = require(ROOT .. '.base.VertexShape')
 local check = require(ROOT .. '.check')
+local limits = require(ROOT .. '.limits')
 
-local number, fail = check.number, check.fail
 local badSelf, type = check.badSelf, type
+local huge = math.huge
+local number, fail, describe = check.number, check.fail, check.describe
+local MIN_LENGTH, MAX_LENGTH = limits.MIN_LENGTH, limits.MAX_LENGTH
 
 ---@class strike.Edge : strike.VertexShape
 local Edge = VertexShape:extend()
 Edge.name = 'Edge'
+
+--- Raise an error at the caller's line unless the segment from (x1, y1) to (x2, y2) (finite
+--- coordinates) has a length strike accepts (limits.lua): at least MIN_LENGTH (the test
+--- Shape:_checkNew makes on the shortest edge, with the same arithmetic), and not so long
+--- that its square nears overflow (beyond 4 * MAX_LENGTH; up to there Shape:_checkNew
+--- decides, on the radius). `fname` names the caller; `what` names the segment (default
+--- 'length').
+---@param fname string
+---@param x1 number
+---@param y1 number
+---@param x2 number
+---@param y2 number
+---@param what string|nil
+function Edge._checkLength(fname, x1, y1, x2, y2, what)
+  local dx, dy = (x2 + 0.0) - x1, (y2 + 0.0) - y1 -- (floats: integer differences wrap on Lua 5.3+)
+  local len = limits.length(dx, dy)
+  if dx - dx ~= 0 or dy - dy ~= 0 then len = huge end -- (the difference overflows)
+  what = what or 'length'
+  if len < MIN_LENGTH then
+    fail(('%s: too small: its %s is %s, below %s, the smallest length strike accepts (its square must stay a'
+      .. ' normal double)'):format(fname, what, describe(len), describe(MIN_LENGTH)))
+  end
+  if len > 4 * MAX_LENGTH then
+    fail(('%s: too large: its %s is %s, above %s (half of it must be at most %s, the largest length strike'
+      .. ' accepts)'):format(fname, what, describe(len), describe(2 * MAX_LENGTH), describe(MAX_LENGTH)))
+  end
+end
+local checkLength = Edge._checkLength
 
 --- A segment from (x1, y1) to (x2, y2); the endpoints must differ.
 ---@param x1 number
@@ -25,12 +56,11 @@ function Edge:new(x1, y1, x2, y2)
   if x1 == x2 and y1 == y2 then
     fail(('strike.Edge: the endpoints must differ, got (%s, %s) twice'):format(x1, y1))
   end
-  local cx, cy = (x1 + x2) / 2, (y1 + y2) / 2
-  local dx, dy = x2 - x1, y2 - y1
-  if not check.finite(cx) or not check.finite(cy) or not check.finite(dx * dx + dy * dy) then
-    fail('strike.Edge: coordinates too large')
-  end
+  x1, y1, x2, y2 = x1 + 0.0, y1 + 0.0, x2 + 0.0, y2 + 0.0 -- (floats: integer arithmetic wraps on Lua 5.3+)
+  local cx, cy = x1 * 0.5 + x2 * 0.5, y1 * 0.5 + y2 * 0.5
+  checkLength('strike.Edge', x1, y1, x2, y2)
   self:_setVertices({ x1, x2 }, { y1, y2 }, 2, cx, cy, 0)
+  self:_checkNew('strike.Edge')
 end
 
 --- Length of the segment.

@@ -17,8 +17,9 @@ function Point:new(x, y)
   if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.Point:new') end
   check.number(x, 'strike.Point', 'x')
   check.number(y, 'strike.Point', 'y')
-  self._r, self._area, self._radius = 0, 0, 0
+  self._r, self._area, self._radius, self._short = 0, 0, 0, 0
   self:_setPose(x, y)
+  self:_checkNew('strike.Point')
 end
 
 --- Arguments that rebuild the point as it is now: x, y.
