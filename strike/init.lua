@@ -14,11 +14,12 @@ local registry = require(ROOT .. '.registry')
 local MTV = require(ROOT .. '.collide.MTV')
 local pair = require(ROOT .. '.collide.kinds').pair
 local compound = require(ROOT .. '.collide.compound')
+local args = require(ROOT .. '.collide.args')
 local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
 
 local describe, what, fail = check.describe, check.what, check.fail
-local root, collide = Shape._rootOf, compound.collide
+local root = Shape._rootOf
 
 ---@class strike
 local S = {
@@ -40,42 +41,10 @@ for _, name in ipairs({ 'Capsule', 'Concave', 'Chain' }) do
   S.trikers[name] = require(ROOT .. '.colliders.' .. name)
 end
 
--- Argument checks. A shape is a table with a pose stamp and a registered kind; a collider
--- has a leaf cache (see colliders/Collider.lua); both tests read fields the hot paths read
--- anyway. Everything else gets an error naming the argument.
-local function isShape(v) return v._pose ~= nil and pair[v.kind] ~= nil end
-local function isCollider(v) return v._single ~= nil end
-
-local function badShape(fname, i, v)
-  if type(v) == 'table' then
-    if v.type == 'collider' then
-      fail(('%s: argument %d must be a shape, got a collider (use S.triking for colliders)'):format(fname, i))
-    end
-    local mt = getmetatable(v)
-    if type(mt) == 'table' and mt.type == 'shape' then
-      -- an instance of a shape class: name what its class lacks, or say it was never built
-      Shape.checkClass(mt, ('%s: argument %d (a %s)'):format(fname, i, tostring(v.name)))
-      if v._pose == nil then
-        fail(('%s: argument %d (a %s) was not built by a strike shape constructor (its new must call'
-          .. ' the parent\'s: Class.super.new(self, ...))'):format(fname, i, tostring(v.name)))
-      end
-    end
-  end
-  fail(('%s: argument %d must be a strike shape, got %s'):format(fname, i, describe(v)))
-end
-
-local function badBody(fname, i, v)
-  if type(v) == 'table' and v.type == 'shape' then badShape(fname, i, v) end
-  if type(v) == 'table' and v.type == 'collider' and getmetatable(v) ~= nil and v._single == nil then
-    fail(('%s: argument %d (a %s) was not built by a strike collider constructor (its new must call the'
-      .. ' parent\'s: Class.super.new(self, ...))'):format(fname, i, tostring(v.name)))
-  end
-  fail(('%s: argument %d must be a strike collider or shape, got %s'):format(fname, i, describe(v)))
-end
-
-local function badOut(fname, out, i)
-  fail(('%s: argument %d (out) must be a table such as S.MTV(), got %s'):format(fname, i, what(out)))
-end
+-- Argument checks (strike/collide/args.lua): a shape is a table with a pose stamp and a
+-- registered kind, a collider one with a leaf cache (see colliders/Collider.lua).
+local isShape, isCollider = args.isShape, args.isCollider
+local badShape, badBody, badOut = args.badShape, args.badBody, args.badOut
 
 --- Separating-axis test between two convex shapes. Always returns an MTV (filled into
 --- `out` when given); check `mtv.separating`. The vector points from shape1 toward shape2.
@@ -112,21 +81,7 @@ end
 ---@param collider2 strike.Collider|strike.Shape
 ---@param out strike.MTV|nil filled and returned on a collision; its contents are unspecified after false
 ---@return strike.MTV|false
-function S.triking(collider1, collider2, out)
-  -- (isCollider, isShape and the `out` check of S.AT, inlined: a hot entry point; a
-  -- collider's own `_single` field tells it from a shape without a lookup in its class)
-  local c1, c2 = collider1, collider2
-  if type(c1) ~= 'table' or (c1._single == nil and (c1._pose == nil or not pair[c1.kind])) then
-    badBody('strike.triking', 1, c1)
-  end
-  if type(c2) ~= 'table' or (c2._single == nil and (c2._pose == nil or not pair[c2.kind])) then
-    badBody('strike.triking', 2, c2)
-  end
-  if out ~= nil and (type(out) ~= 'table' or (out.type ~= 'mtv' and out.type ~= nil)) then
-    badOut('strike.triking', out, 3)
-  end
-  return collide(collider1, collider2, out)
-end
+S.triking = compound.collide
 
 local scratch = MTV() -- S.ite's re-test of shapes that moved
 

@@ -1,7 +1,7 @@
 --- Collision between two bodies (colliders, nested to any depth, or bare shapes): the pair
---- loop over their leaf shapes. S.triking calls it, and so will anything else that tests
---- whole bodies. The caller has checked that both are bodies and that `out` is an MTV-shaped
---- table or nil.
+--- loop over their leaf shapes. It is S.triking itself (it checks its arguments, with the
+--- reads the work needs anyway, and names S.triking in its errors), and anything else that
+--- tests whole bodies calls it too.
 ---
 --- The answer is the deepest MTV over all pairs of leaves whose bounds meet, or false when
 --- no pair collides; bodies under one root collider never collide. It reads a collider's
@@ -13,10 +13,13 @@ local Shape = require(ROOT .. '.base.Shape')
 local Collider = require(ROOT .. '.colliders.Collider')
 local layout = require(ROOT .. '.base.layout')
 local pair = require(ROOT .. '.collide.dispatch').pair
+local args = require(ROOT .. '.collide.args')
 
 local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
 local min, max = math.min, math.max
 local root, leafList = Shape._rootOf, Collider._leafList
+local badBody, badOut = args.badBody, args.badOut
+local FNAME = 'strike.triking'
 
 local compound = {}
 
@@ -42,13 +45,24 @@ local stamp = compound.stamp
 ---@param out strike.MTV|nil
 ---@return strike.MTV|false
 function compound.collide(body1, body2, out)
+  if type(body1) ~= 'table' then badBody(FNAME, 1, body1) end
+  if type(body2) ~= 'table' then badBody(FNAME, 2, body2) end
+  -- Each body's only leaf, when it has one (a collider's `_single`, false when it has
+  -- several or its list is stale; a bare shape is its own), which also tells a collider
+  -- (its own field) from a shape (a pose stamp and a registered kind) from anything else.
+  local s1, s2 = body1._single, body2._single
+  if s1 == nil then
+    if body1._pose == nil or not pair[body1.kind] then badBody(FNAME, 1, body1) end
+    s1 = body1
+  end
+  if s2 == nil then
+    if body2._pose == nil or not pair[body2.kind] then badBody(FNAME, 2, body2) end
+    s2 = body2
+  end
+  if out ~= nil and (type(out) ~= 'table' or (out.type ~= 'mtv' and out.type ~= nil)) then badOut(FNAME, out, 3) end
   local r1 = body1.parent and root(body1) or body1
   local r2 = body2.parent and root(body2) or body2
   if r1 == r2 then return false end -- every leaf pair would share a root
-  -- (each body's only leaf, when it has one: singleOf, inlined for the interpreters)
-  local s1, s2 = body1._single, body2._single
-  if s1 == nil then s1 = body1 end
-  if s2 == nil then s2 = body2 end
   if s1 and s2 then
     -- One leaf each, the common case: straight-line code (LuaJIT traces one-trip loops
     -- badly), tested into the caller's `out` when there is one.
