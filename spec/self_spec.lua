@@ -284,7 +284,13 @@ describe("a method called with '.' instead of ':'", function()
     raisesAt(function() s.getCentroid() end, "strike.Shape:getCentroid: called with '.' instead of ':' (self is nil)")
     raisesAt(function() c.translate(5, 0) end, "strike.Collider:translate: called with '.' instead of ':'")
     raisesAt(function() s.translate(5, 0) end, "strike.Shape:translate: called with '.' instead of ':'")
+    raisesAt(function() c.add('x') end,
+      [[strike.Collider:add: called with '.' instead of ':' (self is the string "x")]])
+    raisesAt(function() s.rotate(true) end, "strike.Shape:rotate: called with '.' instead of ':' (self is true)")
+    raisesAt(function() s.scale(print) end,
+      "strike.Shape:scale: called with '.' instead of ':' (self is a function)")
     expect.nearList({ c:getCentroid() }, { 2.5, 0 })
+    assert.equals(2, #c.shapes)
   end)
 
   it('works for subclasses, whose errors are raised at the caller too', function()

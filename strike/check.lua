@@ -67,15 +67,16 @@ end
 
 -- What a method's `self` was, for check.badSelf: strike's objects by what they are.
 local function describeSelf(v)
-  if type(v) ~= 'table' then
-    if type(v) == 'number' then return 'the number ' .. check.describe(v) end
-    return check.describe(v)
-  end
+  local t = type(v)
+  if t == 'number' then return 'the number ' .. check.describe(v) end
+  if t == 'string' then return 'the ' .. check.describe(v) end
+  if t == 'nil' or t == 'boolean' then return tostring(v) end
+  if t ~= 'table' then return 'a ' .. t end
   if rawget(v, '__index') == v then return 'a class' end
-  local t = v.type
-  if t == 'shape' then return 'a shape' end
-  if t == 'collider' then return 'a collider' end
-  if t == 'mtv' then return 'an MTV' end
+  local kind = v.type
+  if kind == 'shape' then return 'a shape' end
+  if kind == 'collider' then return 'a collider' end
+  if kind == 'mtv' then return 'an MTV' end
   return 'a table that is no strike object'
 end
 

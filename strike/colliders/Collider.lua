@@ -37,11 +37,13 @@ local check = require(ROOT .. '.check')
 local unpack = require(ROOT .. '.compat').unpack
 local rotate = require(ROOT .. '.vec').rotate
 local checkPose = Shape._checkPose
+local layout = require(ROOT .. '.base.layout')
 
 local cos, sin, huge = math.cos, math.sin, math.huge
 local number, positive, optPoint, fail, describe = check.number, check.positive, check.optPoint, check.fail,
   check.describe
 local badSelf, badCollider, type = check.badSelf, check.badCollider, type
+local X, Y = layout.X, layout.Y
 
 ---@class strike.Collider : strike.Object
 ---@field shapes (strike.Shape|strike.Collider)[] the direct children, in order
@@ -424,20 +426,21 @@ function Collider:containsPoint(x, y)
   return false
 end
 
--- Leaf poses after a transform: `pose(leaf, a, b, c)` returns the new x, y and scale.
+-- Leaf poses after a transform: `pose(leaf, a, b, c)` returns the new x, y and scale. They
+-- read a leaf's position slots (what getCentroid returns, without its check of self).
 local function moved(s, dx, dy)
-  local x, y = s:getCentroid()
+  local x, y = s[X], s[Y]
   return x + dx, y + dy, s._scale
 end
 
 local function rotated(s, a, rx, ry)
-  local x, y = s:getCentroid()
+  local x, y = s[X], s[Y]
   local dx, dy = rotate(x - rx, y - ry, cos(a), sin(a))
   return rx + dx, ry + dy, s._scale
 end
 
 local function scaled(s, sf, rx, ry)
-  local x, y = s:getCentroid()
+  local x, y = s[X], s[Y]
   return rx + (x - rx) * sf, ry + (y - ry) * sf, s._scale * sf
 end
 
