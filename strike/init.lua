@@ -53,12 +53,14 @@ local badShape, badBody, badOut = args.badShape, args.badBody, args.badOut
 ---@param out strike.MTV|nil
 ---@return strike.MTV
 function S.AT(shape1, shape2, out)
-  -- (isShape, inlined: this is the hottest entry point; `out` may be nil or a table that
-  -- is not one of strike's objects other than an MTV)
-  if type(shape1) ~= 'table' or shape1._pose == nil or not pair[shape1.kind] then badShape('strike.AT', 1, shape1) end
-  if type(shape2) ~= 'table' or shape2._pose == nil or not pair[shape2.kind] then badShape('strike.AT', 2, shape2) end
-  local ops = pair[shape1.kind][shape2.kind]
+  -- (the argument checks ride on the lookups of the kernel: a shape is a table with a pose
+  -- stamp and a registered kind; `out` may be nil or a table that is not one of strike's
+  -- objects other than an MTV)
+  local row = type(shape1) == 'table' and shape1._pose ~= nil and pair[shape1.kind]
+  local ops = row and type(shape2) == 'table' and shape2._pose ~= nil and row[shape2.kind]
   if not ops then
+    if not row then badShape('strike.AT', 1, shape1) end
+    if type(shape2) ~= 'table' or not isShape(shape2) then badShape('strike.AT', 2, shape2) end
     fail(('strike.AT: no narrow phase for kinds %s and %s'):format(shape1.kind, shape2.kind))
   end
   if out == nil then
