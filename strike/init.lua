@@ -196,7 +196,7 @@ local function checkBody(fname, v, i)
 end
 
 -- A collider without leaves: its box and circle are placeholders at (0, 0), not a place.
-local function empty(v) return v._single == false and v:getShapeCount() == 0 end
+local function empty(v) return v.type == 'collider' and v:getShapeCount() == 0 end
 
 --- Bounding-circle test (centroid and radius) for colliders or shapes: true when the
 --- circles overlap (touching is not overlapping). An empty collider overlaps nothing.
