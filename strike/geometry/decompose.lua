@@ -24,7 +24,7 @@
 --     about 1e-12 radians. Convex means a turn above that, strictly.
 -- The pieces are made of the caller's own coordinates (never recomputed points), so a piece
 -- vertex is always exactly an input vertex.
-local M = {}
+local decompose = {}
 
 local abs, sqrt, floor = math.abs, math.sqrt, math.floor
 local HUGE = math.huge
@@ -37,7 +37,7 @@ local DEGENERATE_TRI = 'could not triangulate outline (numerical degeneracy)'
 local DEGENERATE_MERGE = 'could not decompose outline (numerical degeneracy)'
 
 --- Number of distinct (x, y) pairs among the first n points.
-local function count_distinct(xs, ys, n)
+local function countDistinct(xs, ys, n)
   local seen, count = {}, 0
   for i = 1, n do
     local x, y = xs[i], ys[i]
@@ -64,7 +64,7 @@ local function corner(X, Y, a, b, c)
 end
 
 --- Squared distance from point p to the segment a-b.
-local function seg_dist2(X, Y, p, a, b)
+local function segDist2(X, Y, p, a, b)
   local ex, ey = X[b] - X[a], Y[b] - Y[a]
   local px, py = X[p] - X[a], Y[p] - Y[a]
   local len2 = ex * ex + ey * ey
@@ -85,7 +85,7 @@ local function side(X, Y, a, b, p)
 end
 
 --- Do the segments a-b and c-d (no shared endpoint) cross or come within DIST_EPS?
-local function segments_meet(X, Y, a, b, c, d)
+local function segmentsMeet(X, Y, a, b, c, d)
   -- bounding boxes, grown by the tolerance
   local e = DIST_EPS
   if math.max(X[a], X[b]) + e < math.min(X[c], X[d]) or math.max(X[c], X[d]) + e < math.min(X[a], X[b])
@@ -95,15 +95,15 @@ local function segments_meet(X, Y, a, b, c, d)
   local s1, s2 = side(X, Y, a, b, c), side(X, Y, a, b, d)
   local s3, s4 = side(X, Y, c, d, a), side(X, Y, c, d, b)
   if s1 * s2 < 0 and s3 * s4 < 0 then return true end -- proper crossing
-  return seg_dist2(X, Y, c, a, b) <= DIST_EPS2 or seg_dist2(X, Y, d, a, b) <= DIST_EPS2
-    or seg_dist2(X, Y, a, c, d) <= DIST_EPS2 or seg_dist2(X, Y, b, c, d) <= DIST_EPS2
+  return segDist2(X, Y, c, a, b) <= DIST_EPS2 or segDist2(X, Y, d, a, b) <= DIST_EPS2
+    or segDist2(X, Y, a, c, d) <= DIST_EPS2 or segDist2(X, Y, b, c, d) <= DIST_EPS2
 end
 
 --- Clean and validate the outline.
 --- Returns the scaled working coordinates X, Y (1..m, counter-clockwise, no duplicate or
 --- collinear points), the input index of each working vertex, m and the scale; or nil, err.
 local function prepare(xs, ys, n)
-  local distinct = count_distinct(xs, ys, n)
+  local distinct = countDistinct(xs, ys, n)
   if distinct < 3 then
     return nil, ('needs at least 3 distinct points, got %d'):format(distinct)
   end
@@ -183,7 +183,7 @@ local function prepare(xs, ys, n)
     for j = i + 2, last do
       local j2 = j + 1
       if j2 > m then j2 = 1 end
-      if segments_meet(X, Y, i, i2, j, j2) then
+      if segmentsMeet(X, Y, i, i2, j, j2) then
         return nil, ('outline intersects itself (edges %d and %d)'):format(id[i], id[j])
       end
     end
@@ -325,7 +325,7 @@ end
 
 --- How sharp the merged corner a -> u -> b would be: nil when reflex (beyond TURN_EPS),
 --- else a number increasing with the turn (about 0 for a straight corner, 2 for a U-turn).
-local function merged_corner(X, Y, a, u, b)
+local function mergedCorner(X, Y, a, u, b)
   local cr, len, dot = corner(X, Y, a, u, b)
   if cr < -TURN_EPS * len then return nil end
   if cr <= TURN_EPS * len and dot <= 0 then return nil end
@@ -361,9 +361,9 @@ local function merge(X, Y, m, tris)
   -- score of removing the diagonal h (u -> v) with twin t (v -> u); nil if not convex
   local function score(h)
     local t = twin[h]
-    local su = merged_corner(X, Y, hfrom[hprev[h]], hfrom[h], hto[hnext[t]])
+    local su = mergedCorner(X, Y, hfrom[hprev[h]], hfrom[h], hto[hnext[t]])
     if not su then return nil end
-    local sv = merged_corner(X, Y, hfrom[hprev[t]], hto[h], hto[hnext[h]])
+    local sv = mergedCorner(X, Y, hfrom[hprev[t]], hto[h], hto[hnext[h]])
     if not sv then return nil end
     if sv < su then return sv end
     return su
@@ -450,20 +450,20 @@ end
 ---@param n integer vertex count
 ---@return number[][]|nil pieces convex pieces, each {x1, y1, x2, y2, ...} counter-clockwise
 ---@return string|nil err why the outline was rejected
-function M.decompose(xs, ys, n)
+function decompose.decompose(xs, ys, n)
   n = floor(n)
   local X, Y, id, m = prepare(xs, ys, n)
   if not X then return nil, Y end
 
   local faces
-  local all_convex = true
+  local allConvex = true
   for i = 1, m do
     if not convex(X, Y, (i + m - 2) % m + 1, i, i % m + 1) then
-      all_convex = false
+      allConvex = false
       break
     end
   end
-  if all_convex then
+  if allConvex then
     local face = {}
     for i = 1, m do face[i] = i end
     faces = { face }
@@ -482,4 +482,4 @@ function M.decompose(xs, ys, n)
   return pieces
 end
 
-return M
+return decompose
