@@ -12,7 +12,8 @@
 --   * merging: S. Hertel and K. Mehlhorn, "Fast triangulation of simple polygons", FCT 1983,
 --     LNCS 158 -- the result has at most 2r + 1 pieces for r reflex vertices, hence at most
 --     four times the optimum. Diagonals are removed greedily, the one leaving the sharpest
---     (most convex) corners first; this gives the optimal count on L, U and comb shapes,
+--     (most convex) corners first (a binary heap; removing a diagonal only changes the scores
+--     of the four diagonals beside it); this gives the optimal count on L, U and comb shapes,
 --     where removing them in plain order can leave an extra piece.
 --
 -- Numerics. The working copy of the outline is scaled by a power of two (exact) so that its
@@ -349,13 +350,9 @@ local function merge(X, Y, m, tris)
     hfrom[h], hto[h], hnext[h], hprev[h] = tris[h], tris[nextH], nextH, prevH
     byKey[tris[h] * (m + 1) + tris[nextH]] = h
   end
-  local diags = {}
   for h = 1, nh do
     local o = byKey[hto[h] * (m + 1) + hfrom[h]]
-    if o then
-      twin[h] = o
-      if h < o then diags[#diags + 1] = h end
-    end
+    if o then twin[h] = o end
   end
 
   -- score of removing the diagonal h (u -> v) with twin t (v -> u); nil if not convex
@@ -369,27 +366,83 @@ local function merge(X, Y, m, tris)
     return su
   end
 
-  -- greedy: remove the removable diagonal whose merged corners are sharpest, until none is
-  local alive = #diags
-  while alive > 0 do
-    local best, bestScore, bestK = nil, -HUGE, nil
-    for k = 1, alive do
-      local h = diags[k]
-      local sc = score(h)
-      if sc and sc > bestScore then best, bestScore, bestK = h, sc, k end
+  -- Greedy: remove the removable diagonal whose merged corners are sharpest (ties: the lower
+  -- half-edge number), until none is. A binary heap of (score, diagonal, version) entries;
+  -- an entry is stale once its diagonal is gone or rescored.
+  local hs, hh, hv, size = {}, {}, {}, 0
+  local version = {}
+  local function first(i, j) -- does entry i come before entry j?
+    local si, sj = hs[i], hs[j]
+    if si ~= sj then return si > sj end
+    return hh[i] < hh[j]
+  end
+  local function swap(i, j)
+    hs[i], hs[j] = hs[j], hs[i]
+    hh[i], hh[j] = hh[j], hh[i]
+    hv[i], hv[j] = hv[j], hv[i]
+  end
+  local function push(h)
+    local sc = score(h)
+    if not sc then return end
+    size = size + 1
+    hs[size], hh[size], hv[size] = sc, h, version[h]
+    local i = size
+    while i > 1 do
+      local parent = floor(i / 2)
+      if not first(i, parent) then break end
+      swap(i, parent)
+      i = parent
     end
-    if not best then break end
-    local t = twin[best]
-    local hp, hn, tp, tn = hprev[best], hnext[best], hprev[t], hnext[t]
-    hnext[hp], hprev[tn] = tn, hp
-    hnext[tp], hprev[hn] = hn, tp
-    hfrom[best], hfrom[t] = nil, nil
-    diags[bestK] = diags[alive]
-    diags[alive] = nil
-    alive = alive - 1
+  end
+  local function pop()
+    local h, ver = hh[1], hv[1]
+    swap(1, size)
+    hs[size], hh[size], hv[size] = nil, nil, nil
+    size = size - 1
+    local i = 1
+    while true do
+      local l = 2 * i
+      if l > size then break end
+      local c = l
+      if l + 1 <= size and first(l + 1, l) then c = l + 1 end
+      if not first(c, i) then break end
+      swap(i, c)
+      i = c
+    end
+    return h, ver
   end
 
-  local faces, seen = {}, {}
+  for h = 1, nh do
+    local o = twin[h]
+    if o and h < o then
+      version[h] = 0
+      push(h)
+    end
+  end
+  local touched = {}
+  while size > 0 do
+    local best, ver = pop()
+    if hfrom[best] and version[best] == ver then
+      local t = twin[best]
+      local hp, hn, tp, tn = hprev[best], hnext[best], hprev[t], hnext[t]
+      hnext[hp], hprev[tn] = tn, hp
+      hnext[tp], hprev[hn] = hn, tp
+      hfrom[best], hfrom[t] = nil, nil
+      -- the diagonals among the four relinked half-edges get new scores
+      touched[1], touched[2], touched[3], touched[4] = hp, hn, tp, tn
+      for k = 1, 4 do
+        local d = touched[k]
+        local o = twin[d]
+        if o then
+          if o < d then d = o end
+          version[d] = version[d] + 1
+          push(d)
+        end
+      end
+    end
+  end
+
+  local out, seen = {}, {}
   for h = 1, nh do
     if hfrom[h] and not seen[h] then
       local face, e = {}, h
@@ -398,10 +451,10 @@ local function merge(X, Y, m, tris)
         face[#face + 1] = hfrom[e]
         e = hnext[e]
       until e == h
-      faces[#faces + 1] = face
+      out[#out + 1] = face
     end
   end
-  return faces
+  return out
 end
 
 --- Turn a face into an output piece: drop straight corners (left by merging across a straight
