@@ -7,6 +7,11 @@
 -- is still convex.
 --
 -- Sources (the algorithms, written here from their descriptions):
+--   * self-intersection: M. I. Shamos and D. Hoey, "Geometric intersection problems", FOCS 1976
+--     -- a sweep in which only segments that become neighbours along the sweep line need to be
+--     tested (see crossingSweep for the tolerance);
+--   * the sweep's ordered set: W. Pugh, "Skip lists: a probabilistic alternative to balanced
+--     trees", Comm. ACM 33 (1990);
 --   * ear clipping: D. Eberly, "Triangulation by Ear Clipping", Geometric Tools;
 --     G. H. Meisters, "Polygons have ears", Amer. Math. Monthly 82 (1975).
 --   * merging: S. Hertel and K. Mehlhorn, "Fast triangulation of simple polygons", FCT 1983,
@@ -23,16 +28,23 @@
 --   * TURN_EPS (1e-12): three points a, b, c are collinear when
 --     |cross(b - a, c - b)| <= TURN_EPS * |b - a| * |c - b|, i.e. the turn at b is below
 --     about 1e-12 radians. Convex means a turn above that, strictly.
+--   * GAP_EPS (1e-14): the sweeps call a point above or below a segment when their gap along
+--     y exceeds this -- far above the rounding of that gap (about 1e-16 here), far below
+--     DIST_EPS, so that a point closer than this to a segment always touches it.
 -- The pieces are made of the caller's own coordinates (never recomputed points), so a piece
 -- vertex is always exactly an input vertex.
 local decompose = {}
 
-local abs, sqrt, floor = math.abs, math.sqrt, math.floor
+local abs, sqrt, floor, max, min = math.abs, math.sqrt, math.floor, math.max, math.min
 local HUGE = math.huge
 
 local DIST_EPS = 1e-12
 local DIST_EPS2 = DIST_EPS * DIST_EPS
 local TURN_EPS = 1e-12
+local GAP_EPS = 1e-14
+-- Cell size of the close-vertex grid: a power of two (so that cell numbers are exact) above
+-- 4 * DIST_EPS, the widest gap closeVertices looks for.
+local CELL = 2 ^ -36
 
 local DEGENERATE_TRI = 'could not triangulate outline (numerical degeneracy)'
 local DEGENERATE_MERGE = 'could not decompose outline (numerical degeneracy)'
@@ -64,40 +76,263 @@ local function corner(X, Y, a, b, c)
   return ux * vy - uy * vx, sqrt((ux * ux + uy * uy) * (vx * vx + vy * vy)), ux * vx + uy * vy
 end
 
---- Squared distance from point p to the segment a-b.
-local function segDist2(X, Y, p, a, b)
-  local ex, ey = X[b] - X[a], Y[b] - Y[a]
-  local px, py = X[p] - X[a], Y[p] - Y[a]
-  local len2 = ex * ex + ey * ey
-  local t = 0
-  if len2 > 0 then
-    t = (px * ex + py * ey) / len2
-    if t < 0 then t = 0 elseif t > 1 then t = 1 end
-  end
+--- Squared distance from (px, py) to the segment (ax, ay)-(bx, by) of nonzero length.
+local function segDist2(px, py, ax, ay, bx, by)
+  local ex, ey = bx - ax, by - ay
+  px, py = px - ax, py - ay
+  local t = max(0, min(1, (px * ex + py * ey) / (ex * ex + ey * ey)))
   local dx, dy = px - t * ex, py - t * ey
   return dx * dx + dy * dy
 end
 
---- Sign of cross(b - a, p - a): 1 left, -1 right, 0 on the line (computed in floating point).
-local function side(X, Y, a, b, p)
-  local v = (X[b] - X[a]) * (Y[p] - Y[a]) - (Y[b] - Y[a]) * (X[p] - X[a])
-  if v > 0 then return 1 elseif v < 0 then return -1 end
-  return 0
-end
-
---- Do the segments a-b and c-d (no shared endpoint) cross or come within DIST_EPS?
+--- Do the segments a-b and c-d (no shared endpoint, nonzero lengths) cross or come within
+--- DIST_EPS? Written with few branches (math.min and math.max compile to plain instructions):
+--- LuaJIT compiles a side trace per hot path, and the sweeps call this from many places with
+--- unpredictable outcomes; with a branch per test, a 10,000-vertex star spent most of its
+--- time recompiling traces.
 local function segmentsMeet(X, Y, a, b, c, d)
-  -- bounding boxes, grown by the tolerance
-  local e = DIST_EPS
-  if math.max(X[a], X[b]) + e < math.min(X[c], X[d]) or math.max(X[c], X[d]) + e < math.min(X[a], X[b])
-    or math.max(Y[a], Y[b]) + e < math.min(Y[c], Y[d]) or math.max(Y[c], Y[d]) + e < math.min(Y[a], Y[b]) then
+  local ax, ay, bx, by, cx, cy, dx, dy = X[a], Y[a], X[b], Y[b], X[c], Y[c], X[d], Y[d]
+  -- bounding boxes apart by more than the tolerance
+  if max(min(cx, dx) - max(ax, bx), min(ax, bx) - max(cx, dx),
+    min(cy, dy) - max(ay, by), min(ay, by) - max(cy, dy)) > DIST_EPS then
     return false
   end
-  local s1, s2 = side(X, Y, a, b, c), side(X, Y, a, b, d)
-  local s3, s4 = side(X, Y, c, d, a), side(X, Y, c, d, b)
-  if s1 * s2 < 0 and s3 * s4 < 0 then return true end -- proper crossing
-  return segDist2(X, Y, c, a, b) <= DIST_EPS2 or segDist2(X, Y, d, a, b) <= DIST_EPS2
-    or segDist2(X, Y, a, c, d) <= DIST_EPS2 or segDist2(X, Y, b, c, d) <= DIST_EPS2
+  -- proper crossing: each segment's ends strictly on both sides of the other's line
+  local ex, ey, fx, fy = bx - ax, by - ay, dx - cx, dy - cy
+  local c1 = ex * (cy - ay) - ey * (cx - ax)
+  local c2 = ex * (dy - ay) - ey * (dx - ax)
+  local c3 = fx * (ay - cy) - fy * (ax - cx)
+  local c4 = fx * (by - cy) - fy * (bx - cx)
+  -- (a product underflowing to 0 means an end within 1e-150 of the other line: the distances
+  -- below see it)
+  if max(c1 * c2, c3 * c4) < 0 then return true end
+  return min(segDist2(cx, cy, ax, ay, bx, by), segDist2(dx, dy, ax, ay, bx, by),
+    segDist2(ax, ay, cx, cy, dx, dy), segDist2(bx, by, cx, cy, dx, dy)) <= DIST_EPS2
+end
+
+--- Vertex indices 1..m sorted by U, then V, then index: the order of a sweep along U (ties
+--- broken as if the sweep line were turned a little), and each vertex's rank in it.
+local function sweepOrder(U, V, m)
+  local order, rank = {}, {}
+  for i = 1, m do order[i] = i end
+  table.sort(order, function(i, j)
+    local ui, uj = U[i], U[j]
+    if ui ~= uj then return ui < uj end
+    local vi, vj = V[i], V[j]
+    if vi ~= vj then return vi < vj end
+    return i < j
+  end)
+  for k = 1, m do rank[order[k]] = k end
+  return order, rank
+end
+
+-- The sweep status: an ordered list of positive integer ids, bottom to top, as a skip list
+-- (Pugh 1990). Node 0 is the head on every level; level 1 links every id, so prv[1][id] and
+-- nxt[1][id] are its neighbours (0 or nil at the ends). The levels come from a seeded
+-- Park-Miller generator (Park and Miller, Comm. ACM 31, 1988): the same runs on every VM, and
+-- math.random's state is left alone.
+local MAX_LEVEL = 16
+
+local function newStatus()
+  local nxt, prv = {}, {}
+  for l = 1, MAX_LEVEL do nxt[l], prv[l] = {}, {} end
+  return { nxt = nxt, prv = prv, height = {}, level = 1, seed = 1, path = {} }
+end
+
+--- The last id e of the list with before(e) true (0 if none); before must hold on a prefix of
+--- the list. Leaves in st.path, per level, the last node passed.
+local function statusLast(st, before)
+  local nxt, path = st.nxt, st.path
+  local x = 0
+  for l = st.level, 1, -1 do
+    local nl = nxt[l]
+    local y = nl[x]
+    while y and before(y) do
+      x = y
+      y = nl[x]
+    end
+    path[l] = x
+  end
+  return x
+end
+
+--- Insert id after the last e with before(e) true.
+local function statusInsert(st, id, before)
+  statusLast(st, before)
+  local seed = st.seed * 16807 % 2147483647
+  st.seed = seed
+  local h, u = 1, seed / 2147483647
+  while u < 0.25 and h < MAX_LEVEL do h, u = h + 1, u * 4 end
+  local path = st.path
+  for l = st.level + 1, h do path[l] = 0 end
+  if h > st.level then st.level = h end
+  local nxt, prv = st.nxt, st.prv
+  for l = 1, h do
+    local nl, pl = nxt[l], prv[l]
+    local p = path[l]
+    local y = nl[p]
+    nl[id], pl[id], nl[p] = y, p, id
+    if y then pl[y] = id end
+  end
+  st.height[id] = h
+end
+
+local function statusRemove(st, id)
+  local nxt, prv = st.nxt, st.prv
+  for l = 1, st.height[id] do
+    local nl, pl = nxt[l], prv[l]
+    local p, y = pl[id], nl[id]
+    nl[p] = y
+    if y then pl[y] = p end
+    nl[id], pl[id] = nil, nil
+  end
+  st.height[id] = nil
+end
+
+--- Are edges i and j (edge k runs from vertex k to vertex k % m + 1) neighbours on the outline?
+local function adjacent(i, j, m)
+  local d = i - j
+  return d == 1 or d == -1 or d == m - 1 or d == 1 - m
+end
+
+--- Shamos-Hoey sweep along U (V across it) over the outline's edges, looking for two
+--- non-adjacent edges that meet (segmentsMeet, in the working coordinates X, Y). Returns such
+--- a pair of edge indices, or nil.
+---
+--- Every pair of edges that become neighbours in the status is tested, so, as in the exact
+--- algorithm, the first crossing along the sweep is found. With the tolerance: a comparison
+--- closer than GAP_EPS means the two edges touch (tested at once, or, for edges sharing a
+--- vertex, ordered by their directions there, which the spike check keeps apart); otherwise
+--- it is exact in sign. An edge t passing within DIST_EPS of a vertex v whose U lies within
+--- t's span is a neighbour of one of v's two edges when the sweep reaches v (anything between
+--- them there would be even closer to one of them), so that pair is tested; when the two
+--- edges at v and t are themselves adjacent, the other edges beside them are tested too.
+--- A vertex outside t's span along U is caught by the sweep along V (the caller runs both),
+--- and one outside both spans lies within 2 * DIST_EPS of an end of t (closeVertices).
+local function crossingSweep(U, V, m, X, Y)
+  local order, rank = sweepOrder(U, V, m)
+  local lo, hi = {}, {}
+  for e = 1, m do
+    local f = e % m + 1
+    if rank[e] < rank[f] then lo[e], hi[e] = e, f else lo[e], hi[e] = f, e end
+  end
+
+  local found1, found2
+  -- record (i, j) when non-adjacent and meeting
+  local function test(i, j)
+    if not found1 and not adjacent(i, j, m) and segmentsMeet(X, Y, i, i % m + 1, j, j % m + 1) then
+      found1, found2 = i, j
+    end
+  end
+  -- status neighbours i (below) and j (above)
+  local function neighbours(i, j)
+    if adjacent(i, j, m) then
+      if j % m + 1 == i then i, j = j, i end -- j follows i on the outline
+      test((i + m - 2) % m + 1, j)
+      test(i, j % m + 1)
+    else
+      test(i, j)
+    end
+  end
+
+  local s, p, r -- the edge being inserted, its first and its last end
+  local function above(t) -- does s go above the status edge t?
+    local a, b = lo[t], hi[t]
+    local du = U[b] - U[a]
+    local gap = 0 -- along V, from t to p; an edge parallel to V spans p when it is in the status
+    if du > 0 then gap = (V[p] - V[a]) - (U[p] - U[a]) / du * (V[b] - V[a]) end
+    if gap > GAP_EPS then return true end
+    if gap < -GAP_EPS then return false end
+    if adjacent(s, t, m) then
+      if a == p then -- both leave p: by direction
+        return (U[b] - U[p]) * (V[r] - V[p]) - (V[b] - V[p]) * (U[r] - U[p]) > 0
+      elseif b == p then -- t ends where s starts: either side
+        return true
+      end
+      -- both end at r
+      return (U[a] - U[r]) * (V[p] - V[r]) - (V[a] - V[r]) * (U[p] - U[r]) < 0
+    end
+    test(s, t)
+    return gap > 0
+  end
+
+  local st = newStatus()
+  local prv1, nxt1 = st.prv[1], st.nxt[1]
+  for k = 1, m do
+    local v = order[k]
+    local ein, eout = (v + m - 2) % m + 1, v
+    -- edges starting at v, then edges ending at v
+    for pass = 1, 2 do
+      local e = pass == 1 and ein or eout
+      if lo[e] == v then
+        s, p, r = e, v, hi[e]
+        statusInsert(st, e, above)
+        local below, abv = prv1[e], nxt1[e]
+        if below ~= 0 then neighbours(below, e) end
+        if abv then neighbours(e, abv) end
+        if found1 then return found1, found2 end
+      end
+    end
+    for pass = 1, 2 do
+      local e = pass == 1 and ein or eout
+      if hi[e] == v then
+        local below, abv = prv1[e], nxt1[e]
+        statusRemove(st, e)
+        if below ~= 0 and abv then neighbours(below, abv) end
+        if found1 then return found1, found2 end
+      end
+    end
+  end
+  return nil
+end
+
+--- Pairs of vertices closer than 4 * DIST_EPS along both axes (a grid of CELL-sized cells):
+--- for each, the edges at the one and at the other are tested. Returns a meeting pair of
+--- non-adjacent edges, or nil.
+local function closeVertices(X, Y, m)
+  local grid = {}
+  local lim = 4 * DIST_EPS
+  for v = 1, m do
+    local cx, cy = floor(X[v] / CELL), floor(Y[v] / CELL)
+    -- (offsets, not a loop from cx - 1 to cx + 1: beyond 2^53, cx + 1 == cx)
+    for ox = -1, 1 do
+      local col = grid[cx + ox]
+      if col then
+        for oy = -1, 1 do
+          local cell = col[cy + oy]
+          if cell then
+            for k = 1, #cell do
+              local u = cell[k]
+              if abs(X[u] - X[v]) <= lim and abs(Y[u] - Y[v]) <= lim then
+                local eu, ev = { (u + m - 2) % m + 1, u }, { (v + m - 2) % m + 1, v }
+                for a = 1, 2 do
+                  for b = 1, 2 do
+                    local i, j = eu[a], ev[b]
+                    if not adjacent(i, j, m) and i ~= j
+                      and segmentsMeet(X, Y, i, i % m + 1, j, j % m + 1) then
+                      return i, j
+                    end
+                  end
+                end
+              end
+            end
+          end
+        end
+      end
+    end
+    local col = grid[cx]
+    if not col then
+      col = {}
+      grid[cx] = col
+    end
+    local cell = col[cy]
+    if not cell then
+      cell = {}
+      col[cy] = cell
+    end
+    cell[#cell + 1] = v
+  end
+  return nil
 end
 
 --- Clean and validate the outline.
@@ -115,7 +350,7 @@ local function prepare(xs, ys, n)
     if x < xmin then xmin = x elseif x > xmax then xmax = x end
     if y < ymin then ymin = y elseif y > ymax then ymax = y end
   end
-  local extent = math.max(xmax - xmin, ymax - ymin)
+  local extent = max(xmax - xmin, ymax - ymin)
   -- products of coordinate differences must stay finite (64 leaves room for sums of them)
   if extent * extent * 64 >= HUGE then return nil, 'coordinates too large' end
   -- below this, products of coordinate differences underflow towards subnormal numbers
@@ -177,17 +412,12 @@ local function prepare(xs, ys, n)
   end
 
   -- non-adjacent edges that cross or touch; edge k runs from input vertex k to the next kept one
-  for i = 1, m - 2 do
-    local i2 = i + 1
-    local last = m
-    if i == 1 then last = m - 1 end
-    for j = i + 2, last do
-      local j2 = j + 1
-      if j2 > m then j2 = 1 end
-      if segmentsMeet(X, Y, i, i2, j, j2) then
-        return nil, ('outline intersects itself (edges %d and %d)'):format(id[i], id[j])
-      end
-    end
+  local ei, ej = closeVertices(X, Y, m)
+  if not ei then ei, ej = crossingSweep(X, Y, m, X, Y) end
+  if not ei then ei, ej = crossingSweep(Y, X, m, X, Y) end
+  if ei then
+    if id[ei] > id[ej] then ei, ej = ej, ei end
+    return nil, ('outline intersects itself (edges %d and %d)'):format(id[ei], id[ej])
   end
 
   -- drop collinear points (a linked list; re-examine the neighbour after each removal)
