@@ -2,9 +2,9 @@
 --
 -- The outline is cleaned (duplicate and collinear points dropped), validated (at least three
 -- distinct points, nonzero area, no self-intersection, no spike folding back onto itself),
--- triangulated by ear clipping and the triangles are merged back into convex pieces with the
--- Hertel-Mehlhorn rule: a diagonal is removed when the union of the two pieces it separates
--- is still convex.
+-- triangulated, and the triangles are merged back into convex pieces with the Hertel-Mehlhorn
+-- rule: a diagonal is removed when the union of the two pieces it separates is still convex.
+-- Every step takes O(n log n) time for n vertices.
 --
 -- Sources (the algorithms, written here from their descriptions):
 --   * self-intersection: M. I. Shamos and D. Hoey, "Geometric intersection problems", FOCS 1976
@@ -12,8 +12,12 @@
 --     tested (see crossingSweep for the tolerance);
 --   * the sweep's ordered set: W. Pugh, "Skip lists: a probabilistic alternative to balanced
 --     trees", Comm. ACM 33 (1990);
---   * ear clipping: D. Eberly, "Triangulation by Ear Clipping", Geometric Tools;
---     G. H. Meisters, "Polygons have ears", Amer. Math. Monthly 82 (1975).
+--   * triangulation: partition into monotone pieces by a plane sweep, then each piece with a
+--     stack, as in M. de Berg, O. Cheong, M. van Kreveld and M. Overmars, "Computational
+--     Geometry: Algorithms and Applications", 3rd ed., chapter 3 (after D. T. Lee and
+--     F. P. Preparata 1977, and M. R. Garey, D. S. Johnson, F. P. Preparata and R. E. Tarjan,
+--     "Triangulating a simple polygon", IPL 7, 1978); the sweep runs along x here, ties
+--     broken by y;
 --   * merging: S. Hertel and K. Mehlhorn, "Fast triangulation of simple polygons", FCT 1983,
 --     LNCS 158 -- the result has at most 2r + 1 pieces for r reflex vertices, hence at most
 --     four times the optimum. Diagonals are removed greedily, the one leaving the sharpest
@@ -24,15 +28,17 @@
 -- Numerics. The working copy of the outline is scaled by a power of two (exact) so that its
 -- extent lies in [0.5, 1]; every tolerance below is therefore relative to the outline's size:
 --   * DIST_EPS (1e-12 of the extent): two points closer than this are the same point; a vertex
---     closer than this to a non-adjacent edge touches it; a triangle blocks points this close.
+--     closer than this to a non-adjacent edge touches it.
 --   * TURN_EPS (1e-12): three points a, b, c are collinear when
 --     |cross(b - a, c - b)| <= TURN_EPS * |b - a| * |c - b|, i.e. the turn at b is below
 --     about 1e-12 radians. Convex means a turn above that, strictly.
 --   * GAP_EPS (1e-14): the sweeps call a point above or below a segment when their gap along
 --     y exceeds this -- far above the rounding of that gap (about 1e-16 here), far below
 --     DIST_EPS, so that a point closer than this to a segment always touches it.
--- The pieces are made of the caller's own coordinates (never recomputed points), so a piece
--- vertex is always exactly an input vertex.
+-- The triangulation's decisions (sweep order, vertex kinds, which edge lies below a vertex)
+-- are exact comparisons or orientation tests with these margins, so its diagonals are the
+-- ones exact arithmetic would give. The pieces are made of the caller's own coordinates (never
+-- recomputed points), so a piece vertex is always exactly an input vertex.
 local decompose = {}
 
 local abs, sqrt, floor, max, min = math.abs, math.sqrt, math.floor, math.max, math.min
@@ -74,6 +80,12 @@ local function corner(X, Y, a, b, c)
   local ux, uy = X[b] - X[a], Y[b] - Y[a]
   local vx, vy = X[c] - X[b], Y[c] - Y[b]
   return ux * vy - uy * vx, sqrt((ux * ux + uy * uy) * (vx * vx + vy * vy)), ux * vx + uy * vy
+end
+
+--- Is vertex b of a -> b -> c strictly convex (a left turn above TURN_EPS)?
+local function convex(X, Y, a, b, c)
+  local cr, len = corner(X, Y, a, b, c)
+  return cr > TURN_EPS * len
 end
 
 --- Squared distance from (px, py) to the segment (ax, ay)-(bx, by) of nonzero length.
@@ -464,93 +476,256 @@ local function prepare(xs, ys, n)
   return CX, CY, cid, count
 end
 
---- Is vertex b of a -> b -> c strictly convex (a left turn above TURN_EPS)?
-local function convex(X, Y, a, b, c)
-  local cr, len = corner(X, Y, a, b, c)
-  return cr > TURN_EPS * len
+--- Diagonals that split the counter-clockwise outline into pieces monotone along the sweep
+--- (x, ties broken by y): de Berg et al. section 3.2 with the sweep turned to run along x,
+--- so "left of the vertex" becomes "below it". The status holds the edges with the inside
+--- above them (those running forward along the sweep), each with its helper. Returns the
+--- diagonals as two lists of ends and their count, or nil when a comparison is too close to
+--- call (numerical degeneracy).
+local function monotoneDiagonals(X, Y, m, order, rank)
+  local st = newStatus()
+  local helper, isMerge = {}, {}
+  local da, db, nd = {}, {}, 0
+  local v -- the vertex being placed
+  local bad = false
+  local function above(t) -- is v above edge t (from t to t % m + 1, forward along the sweep)?
+    local b = t % m + 1
+    local dx = X[b] - X[t]
+    if dx <= 0 then -- along y and spanning v: v would lie on it
+      bad = true
+      return false
+    end
+    local gap = (Y[v] - Y[t]) - (X[v] - X[t]) / dx * (Y[b] - Y[t])
+    if gap > GAP_EPS then return true end
+    if gap < -GAP_EPS then return false end
+    bad = true
+    return gap > 0
+  end
+  local function diagonal(a, b)
+    nd = nd + 1
+    da[nd], db[nd] = a, b
+  end
+  -- the status edge right below v, or nil
+  local function below()
+    local j = statusLast(st, above)
+    if j == 0 or bad then return nil end
+    return j
+  end
+
+  for k = 1, m do
+    v = order[k]
+    local p, q = (v + m - 2) % m + 1, v % m + 1
+    local pBefore, qBefore = rank[p] < rank[v], rank[q] < rank[v]
+    local reflex = false
+    if pBefore == qBefore then reflex = corner(X, Y, p, v, q) < 0 end
+    if not pBefore and not qBefore then -- start, or split when reflex
+      if reflex then
+        local j = below()
+        if not j then return nil end
+        diagonal(v, helper[j])
+        helper[j] = v
+      end
+      statusInsert(st, v, above)
+      helper[v] = v
+    elseif pBefore and qBefore then -- end, or merge when reflex
+      if isMerge[helper[p]] then diagonal(v, helper[p]) end
+      statusRemove(st, p)
+      if reflex then
+        isMerge[v] = true
+        local j = below()
+        if not j then return nil end
+        if isMerge[helper[j]] then diagonal(v, helper[j]) end
+        helper[j] = v
+      end
+    elseif pBefore then -- regular, the inside above
+      if isMerge[helper[p]] then diagonal(v, helper[p]) end
+      statusRemove(st, p)
+      statusInsert(st, v, above)
+      helper[v] = v
+    else -- regular, the inside below
+      local j = below()
+      if not j then return nil end
+      if isMerge[helper[j]] then diagonal(v, helper[j]) end
+      helper[j] = v
+    end
+    if bad then return nil end
+  end
+  return da, db, nd
 end
 
---- Ear clipping. Returns a flat list of triangles {a1, b1, c1, a2, ...} (working indices,
---- counter-clockwise), or nil, err.
-local function triangulate(X, Y, m)
-  local nxt, prv = {}, {}
-  for i = 1, m do
-    nxt[i] = i % m + 1
-    prv[i] = (i + m - 2) % m + 1
-  end
-
-  -- Is any remaining vertex other than a, b, c inside or on the triangle a, b, c
-  -- (within DIST_EPS of it)? Every vertex is tested, not only reflex ones, so that a
-  -- vertex touching the new diagonal a-c blocks the ear too.
-  local function blocked(a, b, c)
-    local ax, ay, bx, by, cx, cy = X[a], Y[a], X[b], Y[b], X[c], Y[c]
-    local xlo = math.min(ax, bx, cx) - DIST_EPS
-    local xhi = math.max(ax, bx, cx) + DIST_EPS
-    local ylo = math.min(ay, by, cy) - DIST_EPS
-    local yhi = math.max(ay, by, cy) + DIST_EPS
-    local abx, aby, bcx, bcy, cax, cay = bx - ax, by - ay, cx - bx, cy - by, ax - cx, ay - cy
-    local tab = -DIST_EPS * sqrt(abx * abx + aby * aby)
-    local tbc = -DIST_EPS * sqrt(bcx * bcx + bcy * bcy)
-    local tca = -DIST_EPS * sqrt(cax * cax + cay * cay)
-    local p = nxt[c]
-    while p ~= a do
-      local px, py = X[p], Y[p]
-      if px >= xlo and px <= xhi and py >= ylo and py <= yhi
-        and abx * (py - ay) - aby * (px - ax) >= tab
-        and bcx * (py - by) - bcy * (px - bx) >= tbc
-        and cax * (py - cy) - cay * (px - cx) >= tca then
-        return true
+--- The faces cut out of the outline by the diagonals, each a list of vertices in
+--- counter-clockwise order; or nil (numerical degeneracy). Around a vertex, its diagonals
+--- are sorted counter-clockwise from its outline edge forward; a face turns, at each vertex,
+--- onto the edge just clockwise of the one it arrived along.
+local function faces(X, Y, m, da, db, nd)
+  local fan = {} -- fan[v]: {next vertex, diagonal ends counter-clockwise, previous vertex}
+  for k = 1, nd do
+    for dir = 1, 2 do
+      local v, w = da[k], db[k]
+      if dir == 2 then v, w = w, v end
+      local f = fan[v]
+      if not f then
+        f = { v % m + 1 }
+        fan[v] = f
       end
-      p = nxt[p]
+      f[#f + 1] = w
     end
-    return false
   end
-
-  local ear = {}
-  local function update(v)
-    local a, c = prv[v], nxt[v]
-    ear[v] = convex(X, Y, a, v, c) and not blocked(a, v, c)
-  end
-  for v = 1, m do update(v) end
-
-  local tris, t = {}, 0
-  local count, v = m, 1
-  while count > 3 do
-    -- Clipping an ear only changes the ear status of its two neighbours, except that a
-    -- vertex blocked only by the clipped one may become an ear; a cached "not an ear" is
-    -- thus pessimistic, so when no cached ear is left every status is recomputed.
-    local found = false
-    for pass = 1, 2 do
-      if pass == 2 then
-        local w = v
-        for _ = 1, count do
-          update(w)
-          w = nxt[w]
-        end
-      end
-      for _ = 1, count do
-        if ear[v] then
-          found = true
-          break
-        end
-        v = nxt[v]
-      end
-      if found then break end
+  for v, f in pairs(fan) do
+    -- insertion sort of the diagonal ends by angle from the edge forward (all lie inside the
+    -- corner, whose angle is below 2 pi): the half turn first, then cross products
+    local bx, by = X[f[1]] - X[v], Y[f[1]] - Y[v]
+    local function half(w)
+      local wx, wy = X[w] - X[v], Y[w] - Y[v]
+      local c = bx * wy - by * wx
+      if c > 0 or (c == 0 and bx * wx + by * wy > 0) then return 0 end
+      return 1
     end
-    if not found then return nil, DEGENERATE_TRI end
-    local a, c = prv[v], nxt[v]
-    tris[t + 1], tris[t + 2], tris[t + 3] = a, v, c
+    local function before(w1, w2)
+      local h1, h2 = half(w1), half(w2)
+      if h1 ~= h2 then return h1 < h2 end
+      return (X[w1] - X[v]) * (Y[w2] - Y[v]) - (Y[w1] - Y[v]) * (X[w2] - X[v]) > 0
+    end
+    for i = 3, #f do
+      local w, j = f[i], i - 1
+      while j >= 2 and before(w, f[j]) do
+        f[j + 1] = f[j]
+        j = j - 1
+      end
+      f[j + 1] = w
+    end
+    f[#f + 1] = (v + m - 2) % m + 1
+  end
+
+  -- the vertex after w on the face that arrives at w from u
+  local function turn(u, w)
+    local f = fan[w]
+    if not f then return w % m + 1 end -- u is w's previous vertex
+    for i = 2, #f do
+      if f[i] == u then return f[i - 1] end
+    end
+    return nil
+  end
+
+  local out, seen = {}, {}
+  local limit = m + 2 * nd
+  local function walk(a, b)
+    local key = a * (m + 1) + b
+    if seen[key] then return true end
+    local face, u, w = {}, a, b
+    repeat
+      seen[u * (m + 1) + w] = true
+      face[#face + 1] = u
+      if #face > limit then return false end
+      local x = turn(u, w)
+      if not x then return false end
+      u, w = w, x
+    until u == a and w == b
+    out[#out + 1] = face
+    return true
+  end
+  for v = 1, m do
+    if not walk(v, v % m + 1) then return nil end
+  end
+  for k = 1, nd do
+    if not walk(da[k], db[k]) or not walk(db[k], da[k]) then return nil end
+  end
+  return out
+end
+
+--- Triangulate one monotone face (counter-clockwise vertex list) with a stack (de Berg et al.
+--- section 3.3), appending counter-clockwise triangles to tris from index t + 1. Returns the new
+--- t, or nil when the face is not monotone (numerical degeneracy).
+local function triangulateMonotone(X, Y, rank, face, tris, t)
+  local k = #face
+  if k == 3 then
+    tris[t + 1], tris[t + 2], tris[t + 3] = face[1], face[2], face[3]
+    return t + 3
+  end
+  local iMin, iMax = 1, 1
+  for i = 2, k do
+    if rank[face[i]] < rank[face[iMin]] then iMin = i end
+    if rank[face[i]] > rank[face[iMax]] then iMax = i end
+  end
+  -- merge the lower chain (forward from iMin) and the upper one (backward) in sweep order;
+  -- chain 1 is the lower chain, 2 the upper one
+  local u, chain = { face[iMin] }, { 1 }
+  local i, j = iMin % k + 1, (iMin + k - 2) % k + 1
+  local lastLo, lastUp = rank[face[iMin]], rank[face[iMin]]
+  for n = 2, k - 1 do
+    local takeLo
+    if i == iMax then takeLo = false
+    elseif j == iMax then takeLo = true
+    else takeLo = rank[face[i]] < rank[face[j]] end
+    if takeLo then
+      if rank[face[i]] < lastLo then return nil end
+      u[n], chain[n], lastLo = face[i], 1, rank[face[i]]
+      i = i % k + 1
+    else
+      if rank[face[j]] < lastUp then return nil end
+      u[n], chain[n], lastUp = face[j], 2, rank[face[j]]
+      j = (j + k - 2) % k + 1
+    end
+  end
+  if i ~= iMax or j ~= iMax then return nil end
+  u[k] = face[iMax]
+
+  -- the triangle of w (on chain c) and the consecutive stack vertices a, b (other chain, a first)
+  local function fan(w, c, a, b)
+    if c == 1 then
+      tris[t + 1], tris[t + 2], tris[t + 3] = w, b, a
+    else
+      tris[t + 1], tris[t + 2], tris[t + 3] = w, a, b
+    end
     t = t + 3
-    nxt[a], prv[c] = c, a
-    ear[v] = nil
-    count = count - 1
-    update(a)
-    update(c)
-    v = c
   end
-  local a, c = prv[v], nxt[v]
-  if not convex(X, Y, a, v, c) then return nil, DEGENERATE_TRI end
-  tris[t + 1], tris[t + 2], tris[t + 3] = a, v, c
+
+  local S, top = { 1, 2 }, 2 -- positions in u
+  for n = 3, k - 1 do
+    local w, c = u[n], chain[n]
+    if c ~= chain[S[top]] then
+      for q = top, 2, -1 do fan(w, c, u[S[q - 1]], u[S[q]]) end
+      S[1], S[2], top = n - 1, n, 2
+    else
+      local last = u[S[top]]
+      local lastPos = S[top]
+      top = top - 1
+      while top >= 1 do
+        local a = u[S[top]]
+        if c == 1 then
+          if not convex(X, Y, a, last, w) then break end
+          tris[t + 1], tris[t + 2], tris[t + 3] = a, last, w
+        else
+          if not convex(X, Y, w, last, a) then break end
+          tris[t + 1], tris[t + 2], tris[t + 3] = w, last, a
+        end
+        t = t + 3
+        last, lastPos = a, S[top]
+        top = top - 1
+      end
+      S[top + 1], S[top + 2] = lastPos, n
+      top = top + 2
+    end
+  end
+  local c = chain[S[top]] == 1 and 2 or 1
+  for q = top, 2, -1 do fan(u[k], c, u[S[q - 1]], u[S[q]]) end
+  return t
+end
+
+--- Triangulation of the cleaned counter-clockwise outline: a flat list {a1, b1, c1, a2, ...}
+--- of counter-clockwise triangles (working indices), or nil, err.
+local function triangulate(X, Y, m)
+  local order, rank = sweepOrder(X, Y, m)
+  local da, db, nd = monotoneDiagonals(X, Y, m, order, rank)
+  if not da then return nil, DEGENERATE_TRI end
+  local list = faces(X, Y, m, da, db, nd)
+  if not list then return nil, DEGENERATE_TRI end
+  local tris, t = {}, 0
+  for f = 1, #list do
+    t = triangulateMonotone(X, Y, rank, list[f], tris, t)
+    if not t then return nil, DEGENERATE_TRI end
+  end
+  if t ~= 3 * (m - 2) then return nil, DEGENERATE_TRI end
   return tris
 end
 
@@ -728,6 +903,7 @@ end
 --- "outline intersects itself (edges 2 and 5)" (edge k starts at input vertex k),
 --- "outline folds back on itself at vertex 4 (spike)", "needs at least 3 distinct points, got 2",
 --- "outline has zero area", "coordinates too large", "outline too small" (extent below 1e-140).
+--- Takes O(n log n) time.
 ---@param xs number[] x coordinates (1..n), finite
 ---@param ys number[] y coordinates (1..n), finite
 ---@param n integer vertex count
@@ -738,7 +914,7 @@ function decompose.decompose(xs, ys, n)
   local X, Y, id, m = prepare(xs, ys, n)
   if not X then return nil, Y end
 
-  local faces
+  local list
   local allConvex = true
   for i = 1, m do
     if not convex(X, Y, (i + m - 2) % m + 1, i, i % m + 1) then
@@ -749,16 +925,16 @@ function decompose.decompose(xs, ys, n)
   if allConvex then
     local face = {}
     for i = 1, m do face[i] = i end
-    faces = { face }
+    list = { face }
   else
     local tris, err = triangulate(X, Y, m)
     if not tris then return nil, err end
-    faces = merge(X, Y, m, tris)
+    list = merge(X, Y, m, tris)
   end
 
   local pieces = {}
-  for k = 1, #faces do
-    local piece = finish(X, Y, faces[k], xs, ys, id)
+  for k = 1, #list do
+    local piece = finish(X, Y, list[k], xs, ys, id)
     if not piece then return nil, DEGENERATE_MERGE end
     pieces[k] = piece
   end
