@@ -555,8 +555,12 @@ end
 
 --- The faces cut out of the outline by the diagonals, each a list of vertices in
 --- counter-clockwise order; or nil (numerical degeneracy). Around a vertex, its diagonals
---- are sorted counter-clockwise from its outline edge forward; a face turns, at each vertex,
---- onto the edge just clockwise of the one it arrived along.
+--- (a handful at most: one per helper it was, one or two of its own) are sorted
+--- counter-clockwise from its outline edge forward; a face turns, at each vertex, onto the
+--- edge just clockwise of the one it arrived along. That sort is the one decision here without
+--- a margin: it can only go wrong for two diagonals within about 1e-16 radians of each other
+--- (one nearly through the other's far end); faces walked wrongly would then most likely fail
+--- the checks that follow (monotone chains, triangle count), though nothing guarantees it.
 local function faces(X, Y, m, da, db, nd)
   local fan = {} -- fan[v]: {next vertex, diagonal ends counter-clockwise, previous vertex}
   for k = 1, nd do
