@@ -1,5 +1,6 @@
 --- strike's benchmark suite. Run from the repository root:
 ---   luajit bench/run.lua [--pairs N] [--seed N] [--save] [--only workload] [--full]
+--- (--only concave: only the Concave construction table)
 --- or `make bench` (LuaJIT and Lua 5.4; BENCH_VMS="lua5.1 ..." for others).
 --- Peers: set STRIKE_PEERS to a folder holding checkouts named HC, bump.lua, slick or
 --- Strike; each found is run through its adapter in bench/adapters/ (written against its
@@ -17,6 +18,9 @@
 --- building and checking all of a workload's pairs would take over 2 s is built, checked
 --- and timed on the first pairs that fit (at least 500; the table says how many); --full
 --- lifts that limit.
+---
+--- A second table times S.trikers.Concave (strike only) on outlines of 1,000 to 10,000
+--- vertices, so that the growth of the convex decomposition with the vertex count shows.
 ---
 --- Adapter methods: { name, build = function(desc) → object or nil (unsupported),
 --- test = function(a, b) → hit, separation length }, and optionally
@@ -226,6 +230,52 @@ if not opts.only or opts.only == 'transforms' then
   end
 end
 
+-- Concave construction: S.trikers.Concave from outlines of growing size (validation,
+-- triangulation, merging and the pieces' ConvexPolygons), best of CONCAVE_RUNS builds per
+-- size, so that the growth with the vertex count shows. Each collider's area is checked
+-- against the outline's (shoelace). About 3-5 s in all per VM.
+local CONCAVE_SIZES, CONCAVE_RUNS = { 1000, 2000, 5000, 10000 }, 3
+local CONCAVE_KINDS = {
+  { 'star', 'random star (random radius 0.2-1 per vertex, sorted angles)' },
+  { 'comb', 'comb (n/4 rectangular teeth)' },
+}
+local concave = {} -- concave[kind][n] = { seconds =, kb =, pieces =, ok = }
+if not opts.only or opts.only == 'concave' then
+  local S = require('strike')
+  for _, k in ipairs(CONCAVE_KINDS) do
+    local c0 = clock()
+    concave[k[1]] = {}
+    for _, n in ipairs(CONCAVE_SIZES) do
+      local v = W.outline(k[1], n, opts.seed)
+      local area = 0
+      for i = 1, n do
+        local j = i % n + 1
+        area = area + v[2 * i - 1] * v[2 * j] - v[2 * j - 1] * v[2 * i]
+      end
+      area = math.abs(area) / 2
+      local best, c = math.huge, nil
+      for _ = 1, CONCAVE_RUNS do
+        collectgarbage('collect')
+        local b0 = clock()
+        c = S.trikers.Concave(v)
+        best = math.min(best, clock() - b0)
+      end
+      collectgarbage('collect')
+      collectgarbage('stop')
+      local before = collectgarbage('count')
+      S.trikers.Concave(v)
+      local kb = collectgarbage('count') - before
+      collectgarbage('restart')
+      local ok = math.abs(c:getArea() - area) <= 1e-9 * area
+      concave[k[1]][n] = { seconds = best, kb = kb, pieces = #c.shapes, ok = ok }
+      -- in the CSV: builds per second and KB per build; wrong_verdicts 1 when the area is off
+      record('concave-' .. k[1] .. '-' .. n, 'strike', 'S.trikers.Concave', 1 / best, kb, ok and 0 or 1, 0, 1, 1, 1)
+    end
+    io.stderr:write(('  %-14s %-8s %-22s %.1f s\n'):format('concave-' .. k[1], 'strike', 'S.trikers.Concave',
+      clock() - c0))
+  end
+end
+
 -- The table: one line per workload, strike's methods, then one column pair per peer
 -- method: its speed, and strike's speed as a multiple of it (against strike's method of
 -- the same name, else S.AT, else S.triking). A peer's verdicts that disagree with the
@@ -275,10 +325,14 @@ for _, c in ipairs(columns) do
   header[#header + 1] = 'strike÷' .. c.label
 end
 print(('strike bench — %s — %d pairs per workload, seed %d'):format(vmName, opts.pairs, opts.seed))
-print('| ' .. table.concat(header, ' | ') .. ' |')
-local sep = {}
-for i = 1, #header do sep[i] = '---' end
-print('|' .. table.concat(sep, '|') .. '|')
+local anyPairs = false -- (none with --only concave)
+for _, name in ipairs(names) do anyPairs = anyPairs or find(name, 'strike') ~= nil end
+if anyPairs then
+  print('| ' .. table.concat(header, ' | ') .. ' |')
+  local sep = {}
+  for i = 1, #header do sep[i] = '---' end
+  print('|' .. table.concat(sep, '|') .. '|')
+end
 for _, name in ipairs(names) do
   local at = find(name, 'strike', 'S.AT') or find(name, 'strike', 'move+turn+bbox')
   local tr = find(name, 'strike', 'S.triking')
@@ -308,6 +362,31 @@ if subset then
   print(('* timed on the first pairs only (at least %d). A library too slow to build and check every pair '
     .. 'in %g s per row is checked on the first pairs that fit (counts in brackets); --full checks all.')
     :format(MIN_TIMED, ROW_BUDGET))
+end
+if concave[CONCAVE_KINDS[1][1]] then
+  if anyPairs then print() end
+  local head = { 'Concave construction (ms, best of ' .. CONCAVE_RUNS .. ')' }
+  for _, n in ipairs(CONCAVE_SIZES) do head[#head + 1] = ('%d vertices'):format(n) end
+  head[#head + 1] = ('pieces at %d'):format(CONCAVE_SIZES[#CONCAVE_SIZES])
+  head[#head + 1] = ('MB allocated at %d'):format(CONCAVE_SIZES[#CONCAVE_SIZES])
+  head[#head + 1] = 'ok'
+  print('| ' .. table.concat(head, ' | ') .. ' |')
+  local line = {}
+  for i = 1, #head do line[i] = '---' end
+  print('|' .. table.concat(line, '|') .. '|')
+  for _, k in ipairs(CONCAVE_KINDS) do
+    local cells, ok = { k[2] }, 'yes'
+    for _, n in ipairs(CONCAVE_SIZES) do
+      local r = concave[k[1]][n]
+      cells[#cells + 1] = ('%.1f'):format(r.seconds * 1000)
+      if not r.ok then ok = 'NO (area)' end
+    end
+    local last = concave[k[1]][CONCAVE_SIZES[#CONCAVE_SIZES]]
+    cells[#cells + 1] = tostring(last.pieces)
+    cells[#cells + 1] = ('%.1f'):format(last.kb / 1024)
+    cells[#cells + 1] = ok
+    print('| ' .. table.concat(cells, ' | ') .. ' |')
+  end
 end
 if #skipped > 0 then print('peers skipped: ' .. table.concat(skipped, '; ')) end
 if not peerDir then print('(no peers: set STRIKE_PEERS to a folder with HC, Strike, slick or bump.lua checkouts)') end

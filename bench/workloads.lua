@@ -249,6 +249,35 @@ function W.generate(name, count, seed)
   error('no workload ' .. name)
 end
 
+--- Outlines for the Concave construction table, as flat lists {x1, y1, ...} of n vertices:
+---   'star'  a random star: one vertex in each of n equal angular sectors (so at sorted random
+---           angles), each at a random radius in [0.2, 1] -- spiky, about half the vertices
+---           reflex;
+---   'comb'  a comb of n / 4 rectangular teeth on a base (n a multiple of 4).
+---@param kind string @param n integer @param seed integer
+---@return number[]
+function W.outline(kind, n, seed)
+  local v = {}
+  if kind == 'star' then
+    local rng = PRNG.new(seed)
+    for i = 1, n do
+      local a, r = 2 * pi * (i - 1 + rng:range(0.05, 0.95)) / n, rng:range(0.2, 1)
+      v[2 * i - 1], v[2 * i] = r * math.cos(a), r * math.sin(a)
+    end
+  elseif kind == 'comb' then
+    local teeth = n / 4
+    v = { 0, 0, 2 * teeth - 1, 0 }
+    for k = teeth - 1, 0, -1 do
+      local x = 2 * k
+      v[#v + 1], v[#v + 2], v[#v + 3], v[#v + 4] = x + 1, 3, x, 3
+      if k > 0 then v[#v + 1], v[#v + 2], v[#v + 3], v[#v + 4] = x, 1, x - 1, 1 end
+    end
+  else
+    error('no outline kind ' .. tostring(kind))
+  end
+  return v
+end
+
 --- Frame workload for transforms: `count` bodies to move, turn and bound every frame.
 ---@param count integer @param seed integer
 ---@return table[] descriptions

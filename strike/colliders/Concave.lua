@@ -11,8 +11,9 @@ local Concave = Collider:extend()
 Concave.name = 'Concave'
 
 --- A collider for the simple polygon x1, y1, x2, y2, ... (or one table {x1, y1, ...}), in
---- either winding. It holds convex pieces that tile the outline exactly (ear clipping,
---- then Hertel-Mehlhorn merging). Self-intersecting or degenerate outlines are an error.
+--- either winding. It holds convex pieces that tile the outline exactly (triangulation by
+--- monotone partition, then Hertel-Mehlhorn merging; O(n log n) for n vertices).
+--- Self-intersecting or degenerate outlines are an error.
 ---@param ... number|number[]
 function Concave:new(...)
   if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.Concave:new') end

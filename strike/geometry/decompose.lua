@@ -2,42 +2,61 @@
 --
 -- The outline is cleaned (duplicate and collinear points dropped), validated (at least three
 -- distinct points, nonzero area, no self-intersection, no spike folding back onto itself),
--- triangulated by ear clipping and the triangles are merged back into convex pieces with the
--- Hertel-Mehlhorn rule: a diagonal is removed when the union of the two pieces it separates
--- is still convex.
+-- triangulated, and the triangles are merged back into convex pieces with the Hertel-Mehlhorn
+-- rule: a diagonal is removed when the union of the two pieces it separates is still convex.
+-- Every step takes O(n log n) time for n vertices.
 --
 -- Sources (the algorithms, written here from their descriptions):
---   * ear clipping: D. Eberly, "Triangulation by Ear Clipping", Geometric Tools;
---     G. H. Meisters, "Polygons have ears", Amer. Math. Monthly 82 (1975).
+--   * self-intersection: M. I. Shamos and D. Hoey, "Geometric intersection problems", FOCS 1976
+--     -- a sweep in which only segments that become neighbours along the sweep line need to be
+--     tested (see crossingSweep for the tolerance);
+--   * the sweep's ordered set: W. Pugh, "Skip lists: a probabilistic alternative to balanced
+--     trees", Comm. ACM 33 (1990);
+--   * triangulation: partition into monotone pieces by a plane sweep, then each piece with a
+--     stack, as in M. de Berg, O. Cheong, M. van Kreveld and M. Overmars, "Computational
+--     Geometry: Algorithms and Applications", 3rd ed., chapter 3 (after D. T. Lee and
+--     F. P. Preparata 1977, and M. R. Garey, D. S. Johnson, F. P. Preparata and R. E. Tarjan,
+--     "Triangulating a simple polygon", IPL 7, 1978); the sweep runs along x here, ties
+--     broken by y;
 --   * merging: S. Hertel and K. Mehlhorn, "Fast triangulation of simple polygons", FCT 1983,
 --     LNCS 158 -- the result has at most 2r + 1 pieces for r reflex vertices, hence at most
 --     four times the optimum. Diagonals are removed greedily, the one leaving the sharpest
---     (most convex) corners first; this gives the optimal count on L, U and comb shapes,
+--     (most convex) corners first (a binary heap; removing a diagonal only changes the scores
+--     of the four diagonals beside it); this gives the optimal count on L, U and comb shapes,
 --     where removing them in plain order can leave an extra piece.
 --
 -- Numerics. The working copy of the outline is scaled by a power of two (exact) so that its
 -- extent lies in [0.5, 1]; every tolerance below is therefore relative to the outline's size:
 --   * DIST_EPS (1e-12 of the extent): two points closer than this are the same point; a vertex
---     closer than this to a non-adjacent edge touches it; a triangle blocks points this close.
+--     closer than this to a non-adjacent edge touches it.
 --   * TURN_EPS (1e-12): three points a, b, c are collinear when
 --     |cross(b - a, c - b)| <= TURN_EPS * |b - a| * |c - b|, i.e. the turn at b is below
 --     about 1e-12 radians. Convex means a turn above that, strictly.
--- The pieces are made of the caller's own coordinates (never recomputed points), so a piece
--- vertex is always exactly an input vertex.
-local M = {}
+--   * GAP_EPS (1e-14): the sweeps call a point above or below a segment when their gap along
+--     y exceeds this -- far above the rounding of that gap (about 1e-16 here), far below
+--     DIST_EPS, so that a point closer than this to a segment always touches it.
+-- The triangulation's decisions (sweep order, vertex kinds, which edge lies below a vertex)
+-- are exact comparisons or orientation tests with these margins, so its diagonals are the
+-- ones exact arithmetic would give. The pieces are made of the caller's own coordinates (never
+-- recomputed points), so a piece vertex is always exactly an input vertex.
+local decompose = {}
 
-local abs, sqrt, floor = math.abs, math.sqrt, math.floor
+local abs, sqrt, floor, max, min = math.abs, math.sqrt, math.floor, math.max, math.min
 local HUGE = math.huge
 
 local DIST_EPS = 1e-12
 local DIST_EPS2 = DIST_EPS * DIST_EPS
 local TURN_EPS = 1e-12
+local GAP_EPS = 1e-14
+-- Cell size of the close-vertex grid: a power of two (so that cell numbers are exact) above
+-- 4 * DIST_EPS, the widest gap closeVertices looks for.
+local CELL = 2 ^ -36
 
 local DEGENERATE_TRI = 'could not triangulate outline (numerical degeneracy)'
 local DEGENERATE_MERGE = 'could not decompose outline (numerical degeneracy)'
 
 --- Number of distinct (x, y) pairs among the first n points.
-local function count_distinct(xs, ys, n)
+local function countDistinct(xs, ys, n)
   local seen, count = {}, 0
   for i = 1, n do
     local x, y = xs[i], ys[i]
@@ -63,47 +82,276 @@ local function corner(X, Y, a, b, c)
   return ux * vy - uy * vx, sqrt((ux * ux + uy * uy) * (vx * vx + vy * vy)), ux * vx + uy * vy
 end
 
---- Squared distance from point p to the segment a-b.
-local function seg_dist2(X, Y, p, a, b)
-  local ex, ey = X[b] - X[a], Y[b] - Y[a]
-  local px, py = X[p] - X[a], Y[p] - Y[a]
-  local len2 = ex * ex + ey * ey
-  local t = 0
-  if len2 > 0 then
-    t = (px * ex + py * ey) / len2
-    if t < 0 then t = 0 elseif t > 1 then t = 1 end
-  end
+--- Is vertex b of a -> b -> c strictly convex (a left turn above TURN_EPS)?
+local function convex(X, Y, a, b, c)
+  local cr, len = corner(X, Y, a, b, c)
+  return cr > TURN_EPS * len
+end
+
+--- Squared distance from (px, py) to the segment (ax, ay)-(bx, by) of nonzero length.
+local function segDist2(px, py, ax, ay, bx, by)
+  local ex, ey = bx - ax, by - ay
+  px, py = px - ax, py - ay
+  local t = max(0, min(1, (px * ex + py * ey) / (ex * ex + ey * ey)))
   local dx, dy = px - t * ex, py - t * ey
   return dx * dx + dy * dy
 end
 
---- Sign of cross(b - a, p - a): 1 left, -1 right, 0 on the line (computed in floating point).
-local function side(X, Y, a, b, p)
-  local v = (X[b] - X[a]) * (Y[p] - Y[a]) - (Y[b] - Y[a]) * (X[p] - X[a])
-  if v > 0 then return 1 elseif v < 0 then return -1 end
-  return 0
-end
-
---- Do the segments a-b and c-d (no shared endpoint) cross or come within DIST_EPS?
-local function segments_meet(X, Y, a, b, c, d)
-  -- bounding boxes, grown by the tolerance
-  local e = DIST_EPS
-  if math.max(X[a], X[b]) + e < math.min(X[c], X[d]) or math.max(X[c], X[d]) + e < math.min(X[a], X[b])
-    or math.max(Y[a], Y[b]) + e < math.min(Y[c], Y[d]) or math.max(Y[c], Y[d]) + e < math.min(Y[a], Y[b]) then
+--- Do the segments a-b and c-d (no shared endpoint, nonzero lengths) cross or come within
+--- DIST_EPS? Written with few branches (math.min and math.max compile to plain instructions):
+--- LuaJIT compiles a side trace per hot path, and the sweeps call this from many places with
+--- unpredictable outcomes; with a branch per test, a 10,000-vertex star spent most of its
+--- time recompiling traces.
+local function segmentsMeet(X, Y, a, b, c, d)
+  local ax, ay, bx, by, cx, cy, dx, dy = X[a], Y[a], X[b], Y[b], X[c], Y[c], X[d], Y[d]
+  -- bounding boxes apart by more than the tolerance
+  if max(min(cx, dx) - max(ax, bx), min(ax, bx) - max(cx, dx),
+    min(cy, dy) - max(ay, by), min(ay, by) - max(cy, dy)) > DIST_EPS then
     return false
   end
-  local s1, s2 = side(X, Y, a, b, c), side(X, Y, a, b, d)
-  local s3, s4 = side(X, Y, c, d, a), side(X, Y, c, d, b)
-  if s1 * s2 < 0 and s3 * s4 < 0 then return true end -- proper crossing
-  return seg_dist2(X, Y, c, a, b) <= DIST_EPS2 or seg_dist2(X, Y, d, a, b) <= DIST_EPS2
-    or seg_dist2(X, Y, a, c, d) <= DIST_EPS2 or seg_dist2(X, Y, b, c, d) <= DIST_EPS2
+  -- proper crossing: each segment's ends strictly on both sides of the other's line
+  local ex, ey, fx, fy = bx - ax, by - ay, dx - cx, dy - cy
+  local c1 = ex * (cy - ay) - ey * (cx - ax)
+  local c2 = ex * (dy - ay) - ey * (dx - ax)
+  local c3 = fx * (ay - cy) - fy * (ax - cx)
+  local c4 = fx * (by - cy) - fy * (bx - cx)
+  -- (a product underflowing to 0 means an end within 1e-150 of the other line: the distances
+  -- below see it)
+  if max(c1 * c2, c3 * c4) < 0 then return true end
+  return min(segDist2(cx, cy, ax, ay, bx, by), segDist2(dx, dy, ax, ay, bx, by),
+    segDist2(ax, ay, cx, cy, dx, dy), segDist2(bx, by, cx, cy, dx, dy)) <= DIST_EPS2
+end
+
+--- Vertex indices 1..m sorted by U, then V, then index: the order of a sweep along U (ties
+--- broken as if the sweep line were turned a little), and each vertex's rank in it.
+local function sweepOrder(U, V, m)
+  local order, rank = {}, {}
+  for i = 1, m do order[i] = i end
+  table.sort(order, function(i, j)
+    local ui, uj = U[i], U[j]
+    if ui ~= uj then return ui < uj end
+    local vi, vj = V[i], V[j]
+    if vi ~= vj then return vi < vj end
+    return i < j
+  end)
+  for k = 1, m do rank[order[k]] = k end
+  return order, rank
+end
+
+-- The sweep status: an ordered list of positive integer ids, bottom to top, as a skip list
+-- (Pugh 1990). Node 0 is the head on every level; level 1 links every id, so prv[1][id] and
+-- nxt[1][id] are its neighbours (0 or nil at the ends). The levels come from a seeded
+-- Park-Miller generator (Park and Miller, Comm. ACM 31, 1988): the same runs on every VM, and
+-- math.random's state is left alone.
+local MAX_LEVEL = 16
+
+local function newStatus()
+  local nxt, prv = {}, {}
+  for l = 1, MAX_LEVEL do nxt[l], prv[l] = {}, {} end
+  return { nxt = nxt, prv = prv, height = {}, level = 1, seed = 1, path = {} }
+end
+
+--- The last id e of the list with before(e) true (0 if none); before must hold on a prefix of
+--- the list. Leaves in st.path, per level, the last node passed.
+local function statusLast(st, before)
+  local nxt, path = st.nxt, st.path
+  local x = 0
+  for l = st.level, 1, -1 do
+    local nl = nxt[l]
+    local y = nl[x]
+    while y and before(y) do
+      x = y
+      y = nl[x]
+    end
+    path[l] = x
+  end
+  return x
+end
+
+--- Insert id after the last e with before(e) true.
+local function statusInsert(st, id, before)
+  statusLast(st, before)
+  local seed = st.seed * 16807 % 2147483647
+  st.seed = seed
+  local h, u = 1, seed / 2147483647
+  while u < 0.25 and h < MAX_LEVEL do h, u = h + 1, u * 4 end
+  local path = st.path
+  for l = st.level + 1, h do path[l] = 0 end
+  if h > st.level then st.level = h end
+  local nxt, prv = st.nxt, st.prv
+  for l = 1, h do
+    local nl, pl = nxt[l], prv[l]
+    local p = path[l]
+    local y = nl[p]
+    nl[id], pl[id], nl[p] = y, p, id
+    if y then pl[y] = id end
+  end
+  st.height[id] = h
+end
+
+local function statusRemove(st, id)
+  local nxt, prv = st.nxt, st.prv
+  for l = 1, st.height[id] do
+    local nl, pl = nxt[l], prv[l]
+    local p, y = pl[id], nl[id]
+    nl[p] = y
+    if y then pl[y] = p end
+    nl[id], pl[id] = nil, nil
+  end
+  st.height[id] = nil
+end
+
+--- Are edges i and j (edge k runs from vertex k to vertex k % m + 1) neighbours on the outline?
+local function adjacent(i, j, m)
+  local d = i - j
+  return d == 1 or d == -1 or d == m - 1 or d == 1 - m
+end
+
+--- Shamos-Hoey sweep along U (V across it) over the outline's edges, looking for two
+--- non-adjacent edges that meet (segmentsMeet, in the working coordinates X, Y). Returns such
+--- a pair of edge indices, or nil.
+---
+--- Every pair of edges that become neighbours in the status is tested, so, as in the exact
+--- algorithm, the first crossing along the sweep is found. With the tolerance: a comparison
+--- closer than GAP_EPS means the two edges touch (tested at once, or, for edges sharing a
+--- vertex, ordered by their directions there, which the spike check keeps apart); otherwise
+--- it is exact in sign. An edge t passing within DIST_EPS of a vertex v whose U lies within
+--- t's span is a neighbour of one of v's two edges when the sweep reaches v (anything between
+--- them there would be even closer to one of them), so that pair is tested; when the two
+--- edges at v and t are themselves adjacent, the other edges beside them are tested too.
+--- A vertex outside t's span along U is caught by the sweep along V (the caller runs both),
+--- and one outside both spans lies within 2 * DIST_EPS of an end of t (closeVertices).
+local function crossingSweep(U, V, m, X, Y)
+  local order, rank = sweepOrder(U, V, m)
+  local lo, hi = {}, {}
+  for e = 1, m do
+    local f = e % m + 1
+    if rank[e] < rank[f] then lo[e], hi[e] = e, f else lo[e], hi[e] = f, e end
+  end
+
+  local found1, found2
+  -- record (i, j) when non-adjacent and meeting
+  local function test(i, j)
+    if not found1 and not adjacent(i, j, m) and segmentsMeet(X, Y, i, i % m + 1, j, j % m + 1) then
+      found1, found2 = i, j
+    end
+  end
+  -- status neighbours i (below) and j (above)
+  local function neighbours(i, j)
+    if adjacent(i, j, m) then
+      if j % m + 1 == i then i, j = j, i end -- j follows i on the outline
+      test((i + m - 2) % m + 1, j)
+      test(i, j % m + 1)
+    else
+      test(i, j)
+    end
+  end
+
+  local s, p, r -- the edge being inserted, its first and its last end
+  local function above(t) -- does s go above the status edge t?
+    local a, b = lo[t], hi[t]
+    local du = U[b] - U[a]
+    local gap = 0 -- along V, from t to p; an edge parallel to V spans p when it is in the status
+    if du > 0 then gap = (V[p] - V[a]) - (U[p] - U[a]) / du * (V[b] - V[a]) end
+    if gap > GAP_EPS then return true end
+    if gap < -GAP_EPS then return false end
+    if adjacent(s, t, m) then
+      if a == p then -- both leave p: by direction
+        return (U[b] - U[p]) * (V[r] - V[p]) - (V[b] - V[p]) * (U[r] - U[p]) > 0
+      elseif b == p then -- t ends where s starts: either side
+        return true
+      end
+      -- both end at r
+      return (U[a] - U[r]) * (V[p] - V[r]) - (V[a] - V[r]) * (U[p] - U[r]) < 0
+    end
+    test(s, t)
+    return gap > 0
+  end
+
+  local st = newStatus()
+  local prv1, nxt1 = st.prv[1], st.nxt[1]
+  for k = 1, m do
+    local v = order[k]
+    local ein, eout = (v + m - 2) % m + 1, v
+    -- edges starting at v, then edges ending at v
+    for pass = 1, 2 do
+      local e = pass == 1 and ein or eout
+      if lo[e] == v then
+        s, p, r = e, v, hi[e]
+        statusInsert(st, e, above)
+        local below, abv = prv1[e], nxt1[e]
+        if below ~= 0 then neighbours(below, e) end
+        if abv then neighbours(e, abv) end
+        if found1 then return found1, found2 end
+      end
+    end
+    for pass = 1, 2 do
+      local e = pass == 1 and ein or eout
+      if hi[e] == v then
+        local below, abv = prv1[e], nxt1[e]
+        statusRemove(st, e)
+        if below ~= 0 and abv then neighbours(below, abv) end
+        if found1 then return found1, found2 end
+      end
+    end
+  end
+  return nil
+end
+
+--- Pairs of vertices closer than 4 * DIST_EPS along both axes (a grid of CELL-sized cells):
+--- for each, the edges at the one and at the other are tested. Returns a meeting pair of
+--- non-adjacent edges, or nil.
+local function closeVertices(X, Y, m)
+  local grid = {}
+  local lim = 4 * DIST_EPS
+  for v = 1, m do
+    local cx, cy = floor(X[v] / CELL), floor(Y[v] / CELL)
+    -- (offsets, not a loop from cx - 1 to cx + 1: beyond 2^53, cx + 1 == cx)
+    for ox = -1, 1 do
+      local col = grid[cx + ox]
+      if col then
+        for oy = -1, 1 do
+          local cell = col[cy + oy]
+          if cell then
+            for k = 1, #cell do
+              local u = cell[k]
+              if abs(X[u] - X[v]) <= lim and abs(Y[u] - Y[v]) <= lim then
+                local eu, ev = { (u + m - 2) % m + 1, u }, { (v + m - 2) % m + 1, v }
+                for a = 1, 2 do
+                  for b = 1, 2 do
+                    local i, j = eu[a], ev[b]
+                    if not adjacent(i, j, m) and i ~= j
+                      and segmentsMeet(X, Y, i, i % m + 1, j, j % m + 1) then
+                      return i, j
+                    end
+                  end
+                end
+              end
+            end
+          end
+        end
+      end
+    end
+    local col = grid[cx]
+    if not col then
+      col = {}
+      grid[cx] = col
+    end
+    local cell = col[cy]
+    if not cell then
+      cell = {}
+      col[cy] = cell
+    end
+    cell[#cell + 1] = v
+  end
+  return nil
 end
 
 --- Clean and validate the outline.
 --- Returns the scaled working coordinates X, Y (1..m, counter-clockwise, no duplicate or
 --- collinear points), the input index of each working vertex, m and the scale; or nil, err.
 local function prepare(xs, ys, n)
-  local distinct = count_distinct(xs, ys, n)
+  local distinct = countDistinct(xs, ys, n)
   if distinct < 3 then
     return nil, ('needs at least 3 distinct points, got %d'):format(distinct)
   end
@@ -114,7 +362,7 @@ local function prepare(xs, ys, n)
     if x < xmin then xmin = x elseif x > xmax then xmax = x end
     if y < ymin then ymin = y elseif y > ymax then ymax = y end
   end
-  local extent = math.max(xmax - xmin, ymax - ymin)
+  local extent = max(xmax - xmin, ymax - ymin)
   -- products of coordinate differences must stay finite (64 leaves room for sums of them)
   if extent * extent * 64 >= HUGE then return nil, 'coordinates too large' end
   -- below this, products of coordinate differences underflow towards subnormal numbers
@@ -176,17 +424,12 @@ local function prepare(xs, ys, n)
   end
 
   -- non-adjacent edges that cross or touch; edge k runs from input vertex k to the next kept one
-  for i = 1, m - 2 do
-    local i2 = i + 1
-    local last = m
-    if i == 1 then last = m - 1 end
-    for j = i + 2, last do
-      local j2 = j + 1
-      if j2 > m then j2 = 1 end
-      if segments_meet(X, Y, i, i2, j, j2) then
-        return nil, ('outline intersects itself (edges %d and %d)'):format(id[i], id[j])
-      end
-    end
+  local ei, ej = closeVertices(X, Y, m)
+  if not ei then ei, ej = crossingSweep(X, Y, m, X, Y) end
+  if not ei then ei, ej = crossingSweep(Y, X, m, X, Y) end
+  if ei then
+    if id[ei] > id[ej] then ei, ej = ej, ei end
+    return nil, ('outline intersects itself (edges %d and %d)'):format(id[ei], id[ej])
   end
 
   -- drop collinear points (a linked list; re-examine the neighbour after each removal)
@@ -233,99 +476,266 @@ local function prepare(xs, ys, n)
   return CX, CY, cid, count
 end
 
---- Is vertex b of a -> b -> c strictly convex (a left turn above TURN_EPS)?
-local function convex(X, Y, a, b, c)
-  local cr, len = corner(X, Y, a, b, c)
-  return cr > TURN_EPS * len
+--- Diagonals that split the counter-clockwise outline into pieces monotone along the sweep
+--- (x, ties broken by y): de Berg et al. section 3.2 with the sweep turned to run along x,
+--- so "left of the vertex" becomes "below it". The status holds the edges with the inside
+--- above them (those running forward along the sweep), each with its helper. Returns the
+--- diagonals as two lists of ends and their count, or nil when a comparison is too close to
+--- call (numerical degeneracy).
+local function monotoneDiagonals(X, Y, m, order, rank)
+  local st = newStatus()
+  local helper, isMerge = {}, {}
+  local da, db, nd = {}, {}, 0
+  local v -- the vertex being placed
+  local bad = false
+  local function above(t) -- is v above edge t (from t to t % m + 1, forward along the sweep)?
+    local b = t % m + 1
+    local dx = X[b] - X[t]
+    if dx <= 0 then -- along y and spanning v: v would lie on it
+      bad = true
+      return false
+    end
+    local gap = (Y[v] - Y[t]) - (X[v] - X[t]) / dx * (Y[b] - Y[t])
+    if gap > GAP_EPS then return true end
+    if gap < -GAP_EPS then return false end
+    bad = true
+    return gap > 0
+  end
+  local function diagonal(a, b)
+    nd = nd + 1
+    da[nd], db[nd] = a, b
+  end
+  -- the status edge right below v, or nil
+  local function below()
+    local j = statusLast(st, above)
+    if j == 0 or bad then return nil end
+    return j
+  end
+
+  for k = 1, m do
+    v = order[k]
+    local p, q = (v + m - 2) % m + 1, v % m + 1
+    local pBefore, qBefore = rank[p] < rank[v], rank[q] < rank[v]
+    local reflex = false
+    if pBefore == qBefore then reflex = corner(X, Y, p, v, q) < 0 end
+    if not pBefore and not qBefore then -- start, or split when reflex
+      if reflex then
+        local j = below()
+        if not j then return nil end
+        diagonal(v, helper[j])
+        helper[j] = v
+      end
+      statusInsert(st, v, above)
+      helper[v] = v
+    elseif pBefore and qBefore then -- end, or merge when reflex
+      if isMerge[helper[p]] then diagonal(v, helper[p]) end
+      statusRemove(st, p)
+      if reflex then
+        isMerge[v] = true
+        local j = below()
+        if not j then return nil end
+        if isMerge[helper[j]] then diagonal(v, helper[j]) end
+        helper[j] = v
+      end
+    elseif pBefore then -- regular, the inside above
+      if isMerge[helper[p]] then diagonal(v, helper[p]) end
+      statusRemove(st, p)
+      statusInsert(st, v, above)
+      helper[v] = v
+    else -- regular, the inside below
+      local j = below()
+      if not j then return nil end
+      if isMerge[helper[j]] then diagonal(v, helper[j]) end
+      helper[j] = v
+    end
+    if bad then return nil end
+  end
+  return da, db, nd
 end
 
---- Ear clipping. Returns a flat list of triangles {a1, b1, c1, a2, ...} (working indices,
---- counter-clockwise), or nil, err.
-local function triangulate(X, Y, m)
-  local nxt, prv = {}, {}
-  for i = 1, m do
-    nxt[i] = i % m + 1
-    prv[i] = (i + m - 2) % m + 1
-  end
-
-  -- Is any remaining vertex other than a, b, c inside or on the triangle a, b, c
-  -- (within DIST_EPS of it)? Every vertex is tested, not only reflex ones, so that a
-  -- vertex touching the new diagonal a-c blocks the ear too.
-  local function blocked(a, b, c)
-    local ax, ay, bx, by, cx, cy = X[a], Y[a], X[b], Y[b], X[c], Y[c]
-    local xlo = math.min(ax, bx, cx) - DIST_EPS
-    local xhi = math.max(ax, bx, cx) + DIST_EPS
-    local ylo = math.min(ay, by, cy) - DIST_EPS
-    local yhi = math.max(ay, by, cy) + DIST_EPS
-    local abx, aby, bcx, bcy, cax, cay = bx - ax, by - ay, cx - bx, cy - by, ax - cx, ay - cy
-    local tab = -DIST_EPS * sqrt(abx * abx + aby * aby)
-    local tbc = -DIST_EPS * sqrt(bcx * bcx + bcy * bcy)
-    local tca = -DIST_EPS * sqrt(cax * cax + cay * cay)
-    local p = nxt[c]
-    while p ~= a do
-      local px, py = X[p], Y[p]
-      if px >= xlo and px <= xhi and py >= ylo and py <= yhi
-        and abx * (py - ay) - aby * (px - ax) >= tab
-        and bcx * (py - by) - bcy * (px - bx) >= tbc
-        and cax * (py - cy) - cay * (px - cx) >= tca then
-        return true
+--- The faces cut out of the outline by the diagonals, each a list of vertices in
+--- counter-clockwise order; or nil (numerical degeneracy). Around a vertex, its diagonals
+--- (a handful at most: one per helper it was, one or two of its own) are sorted
+--- counter-clockwise from its outline edge forward; a face turns, at each vertex, onto the
+--- edge just clockwise of the one it arrived along. That sort is the one decision here without
+--- a margin: it can only go wrong for two diagonals within about 1e-16 radians of each other
+--- (one nearly through the other's far end); faces walked wrongly would then most likely fail
+--- the checks that follow (monotone chains, triangle count), though nothing guarantees it.
+local function faces(X, Y, m, da, db, nd)
+  local fan = {} -- fan[v]: {next vertex, diagonal ends counter-clockwise, previous vertex}
+  for k = 1, nd do
+    for dir = 1, 2 do
+      local v, w = da[k], db[k]
+      if dir == 2 then v, w = w, v end
+      local f = fan[v]
+      if not f then
+        f = { v % m + 1 }
+        fan[v] = f
       end
-      p = nxt[p]
+      f[#f + 1] = w
     end
-    return false
   end
-
-  local ear = {}
-  local function update(v)
-    local a, c = prv[v], nxt[v]
-    ear[v] = convex(X, Y, a, v, c) and not blocked(a, v, c)
-  end
-  for v = 1, m do update(v) end
-
-  local tris, t = {}, 0
-  local count, v = m, 1
-  while count > 3 do
-    -- Clipping an ear only changes the ear status of its two neighbours, except that a
-    -- vertex blocked only by the clipped one may become an ear; a cached "not an ear" is
-    -- thus pessimistic, so when no cached ear is left every status is recomputed.
-    local found = false
-    for pass = 1, 2 do
-      if pass == 2 then
-        local w = v
-        for _ = 1, count do
-          update(w)
-          w = nxt[w]
-        end
-      end
-      for _ = 1, count do
-        if ear[v] then
-          found = true
-          break
-        end
-        v = nxt[v]
-      end
-      if found then break end
+  for v, f in pairs(fan) do
+    -- insertion sort of the diagonal ends by angle from the edge forward (all lie inside the
+    -- corner, whose angle is below 2 pi): the half turn first, then cross products
+    local bx, by = X[f[1]] - X[v], Y[f[1]] - Y[v]
+    local function half(w)
+      local wx, wy = X[w] - X[v], Y[w] - Y[v]
+      local c = bx * wy - by * wx
+      if c > 0 or (c == 0 and bx * wx + by * wy > 0) then return 0 end
+      return 1
     end
-    if not found then return nil, DEGENERATE_TRI end
-    local a, c = prv[v], nxt[v]
-    tris[t + 1], tris[t + 2], tris[t + 3] = a, v, c
+    local function before(w1, w2)
+      local h1, h2 = half(w1), half(w2)
+      if h1 ~= h2 then return h1 < h2 end
+      return (X[w1] - X[v]) * (Y[w2] - Y[v]) - (Y[w1] - Y[v]) * (X[w2] - X[v]) > 0
+    end
+    for i = 3, #f do
+      local w, j = f[i], i - 1
+      while j >= 2 and before(w, f[j]) do
+        f[j + 1] = f[j]
+        j = j - 1
+      end
+      f[j + 1] = w
+    end
+    f[#f + 1] = (v + m - 2) % m + 1
+  end
+
+  -- the vertex after w on the face that arrives at w from u
+  local function turn(u, w)
+    local f = fan[w]
+    if not f then return w % m + 1 end -- u is w's previous vertex
+    for i = 2, #f do
+      if f[i] == u then return f[i - 1] end
+    end
+    return nil
+  end
+
+  local out, seen = {}, {}
+  local limit = m + 2 * nd
+  local function walk(a, b)
+    local key = a * (m + 1) + b
+    if seen[key] then return true end
+    local face, u, w = {}, a, b
+    repeat
+      seen[u * (m + 1) + w] = true
+      face[#face + 1] = u
+      if #face > limit then return false end
+      local x = turn(u, w)
+      if not x then return false end
+      u, w = w, x
+    until u == a and w == b
+    out[#out + 1] = face
+    return true
+  end
+  for v = 1, m do
+    if not walk(v, v % m + 1) then return nil end
+  end
+  for k = 1, nd do
+    if not walk(da[k], db[k]) or not walk(db[k], da[k]) then return nil end
+  end
+  return out
+end
+
+--- Triangulate one monotone face (counter-clockwise vertex list) with a stack (de Berg et al.
+--- section 3.3), appending counter-clockwise triangles to tris from index t + 1. Returns the new
+--- t, or nil when the face is not monotone (numerical degeneracy).
+local function triangulateMonotone(X, Y, rank, face, tris, t)
+  local k = #face
+  if k == 3 then
+    tris[t + 1], tris[t + 2], tris[t + 3] = face[1], face[2], face[3]
+    return t + 3
+  end
+  local iMin, iMax = 1, 1
+  for i = 2, k do
+    if rank[face[i]] < rank[face[iMin]] then iMin = i end
+    if rank[face[i]] > rank[face[iMax]] then iMax = i end
+  end
+  -- merge the lower chain (forward from iMin) and the upper one (backward) in sweep order;
+  -- chain 1 is the lower chain, 2 the upper one
+  local u, chain = { face[iMin] }, { 1 }
+  local i, j = iMin % k + 1, (iMin + k - 2) % k + 1
+  local lastLo, lastUp = rank[face[iMin]], rank[face[iMin]]
+  for n = 2, k - 1 do
+    local takeLo
+    if i == iMax then takeLo = false
+    elseif j == iMax then takeLo = true
+    else takeLo = rank[face[i]] < rank[face[j]] end
+    if takeLo then
+      if rank[face[i]] < lastLo then return nil end
+      u[n], chain[n], lastLo = face[i], 1, rank[face[i]]
+      i = i % k + 1
+    else
+      if rank[face[j]] < lastUp then return nil end
+      u[n], chain[n], lastUp = face[j], 2, rank[face[j]]
+      j = (j + k - 2) % k + 1
+    end
+  end
+  if i ~= iMax or j ~= iMax then return nil end
+  u[k] = face[iMax]
+
+  -- the triangle of w (on chain c) and the consecutive stack vertices a, b (other chain, a first)
+  local function fan(w, c, a, b)
+    if c == 1 then
+      tris[t + 1], tris[t + 2], tris[t + 3] = w, b, a
+    else
+      tris[t + 1], tris[t + 2], tris[t + 3] = w, a, b
+    end
     t = t + 3
-    nxt[a], prv[c] = c, a
-    ear[v] = nil
-    count = count - 1
-    update(a)
-    update(c)
-    v = c
   end
-  local a, c = prv[v], nxt[v]
-  if not convex(X, Y, a, v, c) then return nil, DEGENERATE_TRI end
-  tris[t + 1], tris[t + 2], tris[t + 3] = a, v, c
+
+  local S, top = { 1, 2 }, 2 -- positions in u
+  for n = 3, k - 1 do
+    local w, c = u[n], chain[n]
+    if c ~= chain[S[top]] then
+      for q = top, 2, -1 do fan(w, c, u[S[q - 1]], u[S[q]]) end
+      S[1], S[2], top = n - 1, n, 2
+    else
+      local last = u[S[top]]
+      local lastPos = S[top]
+      top = top - 1
+      while top >= 1 do
+        local a = u[S[top]]
+        if c == 1 then
+          if not convex(X, Y, a, last, w) then break end
+          tris[t + 1], tris[t + 2], tris[t + 3] = a, last, w
+        else
+          if not convex(X, Y, w, last, a) then break end
+          tris[t + 1], tris[t + 2], tris[t + 3] = w, last, a
+        end
+        t = t + 3
+        last, lastPos = a, S[top]
+        top = top - 1
+      end
+      S[top + 1], S[top + 2] = lastPos, n
+      top = top + 2
+    end
+  end
+  local c = chain[S[top]] == 1 and 2 or 1
+  for q = top, 2, -1 do fan(u[k], c, u[S[q - 1]], u[S[q]]) end
+  return t
+end
+
+--- Triangulation of the cleaned counter-clockwise outline: a flat list {a1, b1, c1, a2, ...}
+--- of counter-clockwise triangles (working indices), or nil, err.
+local function triangulate(X, Y, m)
+  local order, rank = sweepOrder(X, Y, m)
+  local da, db, nd = monotoneDiagonals(X, Y, m, order, rank)
+  if not da then return nil, DEGENERATE_TRI end
+  local list = faces(X, Y, m, da, db, nd)
+  if not list then return nil, DEGENERATE_TRI end
+  local tris, t = {}, 0
+  for f = 1, #list do
+    t = triangulateMonotone(X, Y, rank, list[f], tris, t)
+    if not t then return nil, DEGENERATE_TRI end
+  end
+  if t ~= 3 * (m - 2) then return nil, DEGENERATE_TRI end
   return tris
 end
 
 --- How sharp the merged corner a -> u -> b would be: nil when reflex (beyond TURN_EPS),
 --- else a number increasing with the turn (about 0 for a straight corner, 2 for a U-turn).
-local function merged_corner(X, Y, a, u, b)
+local function mergedCorner(X, Y, a, u, b)
   local cr, len, dot = corner(X, Y, a, u, b)
   if cr < -TURN_EPS * len then return nil end
   if cr <= TURN_EPS * len and dot <= 0 then return nil end
@@ -349,47 +759,99 @@ local function merge(X, Y, m, tris)
     hfrom[h], hto[h], hnext[h], hprev[h] = tris[h], tris[nextH], nextH, prevH
     byKey[tris[h] * (m + 1) + tris[nextH]] = h
   end
-  local diags = {}
   for h = 1, nh do
     local o = byKey[hto[h] * (m + 1) + hfrom[h]]
-    if o then
-      twin[h] = o
-      if h < o then diags[#diags + 1] = h end
-    end
+    if o then twin[h] = o end
   end
 
   -- score of removing the diagonal h (u -> v) with twin t (v -> u); nil if not convex
   local function score(h)
     local t = twin[h]
-    local su = merged_corner(X, Y, hfrom[hprev[h]], hfrom[h], hto[hnext[t]])
+    local su = mergedCorner(X, Y, hfrom[hprev[h]], hfrom[h], hto[hnext[t]])
     if not su then return nil end
-    local sv = merged_corner(X, Y, hfrom[hprev[t]], hto[h], hto[hnext[h]])
+    local sv = mergedCorner(X, Y, hfrom[hprev[t]], hto[h], hto[hnext[h]])
     if not sv then return nil end
     if sv < su then return sv end
     return su
   end
 
-  -- greedy: remove the removable diagonal whose merged corners are sharpest, until none is
-  local alive = #diags
-  while alive > 0 do
-    local best, bestScore, bestK = nil, -HUGE, nil
-    for k = 1, alive do
-      local h = diags[k]
-      local sc = score(h)
-      if sc and sc > bestScore then best, bestScore, bestK = h, sc, k end
+  -- Greedy: remove the removable diagonal whose merged corners are sharpest (ties: the lower
+  -- half-edge number), until none is. A binary heap of (score, diagonal, version) entries;
+  -- an entry is stale once its diagonal is gone or rescored.
+  local hs, hh, hv, size = {}, {}, {}, 0
+  local version = {}
+  local function first(i, j) -- does entry i come before entry j?
+    local si, sj = hs[i], hs[j]
+    if si ~= sj then return si > sj end
+    return hh[i] < hh[j]
+  end
+  local function swap(i, j)
+    hs[i], hs[j] = hs[j], hs[i]
+    hh[i], hh[j] = hh[j], hh[i]
+    hv[i], hv[j] = hv[j], hv[i]
+  end
+  local function push(h)
+    local sc = score(h)
+    if not sc then return end
+    size = size + 1
+    hs[size], hh[size], hv[size] = sc, h, version[h]
+    local i = size
+    while i > 1 do
+      local parent = floor(i / 2)
+      if not first(i, parent) then break end
+      swap(i, parent)
+      i = parent
     end
-    if not best then break end
-    local t = twin[best]
-    local hp, hn, tp, tn = hprev[best], hnext[best], hprev[t], hnext[t]
-    hnext[hp], hprev[tn] = tn, hp
-    hnext[tp], hprev[hn] = hn, tp
-    hfrom[best], hfrom[t] = nil, nil
-    diags[bestK] = diags[alive]
-    diags[alive] = nil
-    alive = alive - 1
+  end
+  local function pop()
+    local h, ver = hh[1], hv[1]
+    swap(1, size)
+    hs[size], hh[size], hv[size] = nil, nil, nil
+    size = size - 1
+    local i = 1
+    while true do
+      local l = 2 * i
+      if l > size then break end
+      local c = l
+      if l + 1 <= size and first(l + 1, l) then c = l + 1 end
+      if not first(c, i) then break end
+      swap(i, c)
+      i = c
+    end
+    return h, ver
   end
 
-  local faces, seen = {}, {}
+  for h = 1, nh do
+    local o = twin[h]
+    if o and h < o then
+      version[h] = 0
+      push(h)
+    end
+  end
+  local touched = {}
+  while size > 0 do
+    local best, ver = pop()
+    if hfrom[best] and version[best] == ver then
+      local t = twin[best]
+      local hp, hn, tp, tn = hprev[best], hnext[best], hprev[t], hnext[t]
+      hnext[hp], hprev[tn] = tn, hp
+      hnext[tp], hprev[hn] = hn, tp
+      hfrom[best], hfrom[t] = nil, nil
+      -- the diagonals among the four relinked half-edges get new scores
+      touched[1], touched[2], touched[3], touched[4] = hp, hn, tp, tn
+      for k = 1, 4 do
+        local d = touched[k]
+        local o = twin[d]
+        if o then
+          if o < d then d = o end
+          version[d] = version[d] + 1
+          push(d)
+        end
+      end
+    end
+  end
+
+  local out, seen = {}, {}
   for h = 1, nh do
     if hfrom[h] and not seen[h] then
       local face, e = {}, h
@@ -398,10 +860,10 @@ local function merge(X, Y, m, tris)
         face[#face + 1] = hfrom[e]
         e = hnext[e]
       until e == h
-      faces[#faces + 1] = face
+      out[#out + 1] = face
     end
   end
-  return faces
+  return out
 end
 
 --- Turn a face into an output piece: drop straight corners (left by merging across a straight
@@ -445,41 +907,42 @@ end
 --- "outline intersects itself (edges 2 and 5)" (edge k starts at input vertex k),
 --- "outline folds back on itself at vertex 4 (spike)", "needs at least 3 distinct points, got 2",
 --- "outline has zero area", "coordinates too large", "outline too small" (extent below 1e-140).
+--- Takes O(n log n) time.
 ---@param xs number[] x coordinates (1..n), finite
 ---@param ys number[] y coordinates (1..n), finite
 ---@param n integer vertex count
 ---@return number[][]|nil pieces convex pieces, each {x1, y1, x2, y2, ...} counter-clockwise
 ---@return string|nil err why the outline was rejected
-function M.decompose(xs, ys, n)
+function decompose.decompose(xs, ys, n)
   n = floor(n)
   local X, Y, id, m = prepare(xs, ys, n)
   if not X then return nil, Y end
 
-  local faces
-  local all_convex = true
+  local list
+  local allConvex = true
   for i = 1, m do
     if not convex(X, Y, (i + m - 2) % m + 1, i, i % m + 1) then
-      all_convex = false
+      allConvex = false
       break
     end
   end
-  if all_convex then
+  if allConvex then
     local face = {}
     for i = 1, m do face[i] = i end
-    faces = { face }
+    list = { face }
   else
     local tris, err = triangulate(X, Y, m)
     if not tris then return nil, err end
-    faces = merge(X, Y, m, tris)
+    list = merge(X, Y, m, tris)
   end
 
   local pieces = {}
-  for k = 1, #faces do
-    local piece = finish(X, Y, faces[k], xs, ys, id)
+  for k = 1, #list do
+    local piece = finish(X, Y, list[k], xs, ys, id)
     if not piece then return nil, DEGENERATE_MERGE end
     pieces[k] = piece
   end
   return pieces
 end
 
-return M
+return decompose
