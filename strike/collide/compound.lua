@@ -12,7 +12,8 @@ local MTV = require(ROOT .. '.collide.MTV')
 local Shape = require(ROOT .. '.base.Shape')
 local Collider = require(ROOT .. '.colliders.Collider')
 local layout = require(ROOT .. '.base.layout')
-local pair = require(ROOT .. '.collide.dispatch').pair
+local dispatch = require(ROOT .. '.collide.dispatch')
+local pair, collideOf = dispatch.pair, dispatch.collide
 local args = require(ROOT .. '.collide.args')
 
 local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
@@ -23,8 +24,10 @@ local FNAME = 'strike.triking'
 
 local compound = {}
 
--- Scratch state: two MTVs swapped as the best one changes.
+-- Scratch state: two MTVs swapped as the best one changes, and one-slot leaf lists for
+-- bare shapes.
 local tmpA, tmpB = MTV(), MTV()
+local one1, one2 = {}, {}
 
 --- Fill the fields of `out` that name the bodies and the poses it was computed for.
 ---@param out strike.MTV
@@ -71,7 +74,7 @@ function compound.collide(body1, body2, out)
     if s1[MAXX] < s2[MINX] or s2[MAXX] < s1[MINX] or s1[MAXY] < s2[MINY] or s2[MAXY] < s1[MINY] then
       return false -- the bounds do not even meet
     end
-    local m = pair[s1.kind][s2.kind].collide(s1, s2, out or tmpA)
+    local m = collideOf[s1.kind][s2.kind](s1, s2, out or tmpA)
     if not (m.depth > 0) then return false end -- luacheck: ignore 581 (NaN reads as no collision)
     if not out then out = MTV._set(MTV(), m) end
     out.collider, out.collided = r1, r2
@@ -79,25 +82,25 @@ function compound.collide(body1, body2, out)
     return out
   end
   local l1, n1, l2, n2
-  if body1.type == 'collider' then l1, n1 = leafList(body1) else l1, n1 = nil, 1 end
-  if body2.type == 'collider' then l2, n2 = leafList(body2) else l2, n2 = nil, 1 end
+  if s1 == body1 then l1, n1 = one1, 1; one1[1] = body1 else l1, n1 = leafList(body1) end
+  if s2 == body2 then l2, n2 = one2, 1; one2[1] = body2 else l2, n2 = leafList(body2) end
   -- Test into `tmp`; a deeper result becomes `best` and the other buffer becomes `tmp`.
   -- With an `out` table it is one of the two buffers, so the usual single hit needs no copy.
   local best, tmp, found = tmpA, out or tmpB, false
   local bestDepth = 0
   for i = 1, n1 do
-    local a = l1 and l1[i] or body1
+    local a = l1[i]
     if a._dirty then a:_refresh() end
     local ax0, ay0, ax1, ay1 = a[MINX], a[MINY], a[MAXX], a[MAXY]
-    local row = pair[a.kind]
+    local row = collideOf[a.kind]
     for j = 1, n2 do
-      local b = l2 and l2[j] or body2
+      local b = l2[j]
       if b._dirty then b:_refresh() end
       -- Bounds meet (closed intervals: an axis-aligned edge or a point has a flat box;
       -- the narrow phase decides touching), as two tests instead of four: fewer trace
       -- exits under LuaJIT.
       if min(ax1, b[MAXX]) >= max(ax0, b[MINX]) and min(ay1, b[MAXY]) >= max(ay0, b[MINY]) then
-        row[b.kind].collide(a, b, tmp)
+        row[b.kind](a, b, tmp)
         local d = tmp.depth
         if d > bestDepth then -- (false for NaN and for separating results)
           best, tmp, found, bestDepth = tmp, best, true, d
@@ -105,6 +108,7 @@ function compound.collide(body1, body2, out)
       end
     end
   end
+  one1[1], one2[1] = nil, nil -- (bare shapes are not kept alive by strike)
   if not found then return false end
   if best ~= out then out = MTV._set(out or MTV(), best) end
   return stamp(out, r1, r2)

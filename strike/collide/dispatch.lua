@@ -31,6 +31,9 @@ local dispatch = {}
 dispatch.kind = {}
 --- Per-pair operations, dispatch.pair[kindA][kindB].
 dispatch.pair = {}
+--- The collide kernels alone, dispatch.collide[kindA][kindB] (the same functions as
+--- dispatch.pair[kindA][kindB].collide, one lookup fewer for the pair loops).
+dispatch.collide = {}
 
 -- The operations a pair table has, in order, and which need a kernel.
 local PAIR_OPS = { 'collide', 'contact', 'distance', 'toi' }
@@ -38,7 +41,7 @@ local REQUIRED = { collide = true, contact = true }
 
 local function row(ka)
   local r = dispatch.pair[ka]
-  if not r then r = {}; dispatch.pair[ka] = r end
+  if not r then r = {}; dispatch.pair[ka] = r; dispatch.collide[ka] = {} end
   return r
 end
 
@@ -79,10 +82,13 @@ function dispatch.register(ka, kb, ops)
     fwd[name] = f
   end
   row(ka)[kb] = fwd
+  dispatch.collide[ka][kb] = fwd.collide
   if ka == kb then return end
   local collide, contact = fwd.collide, fwd.contact
+  local reversed = function(b, a, out) return collide(a, b, out, true) end
+  dispatch.collide[kb][ka] = reversed
   row(kb)[ka] = {
-    collide = function(b, a, out) return collide(a, b, out, true) end,
+    collide = reversed,
     contact = function(b, a, nx, ny, depth, edge, out) return contact(a, b, -nx, -ny, depth, -edge, out) end,
     distance = false,
     toi = false,
