@@ -61,7 +61,7 @@ function S.AT(shape1, shape2, out)
   if not ops then
     if not row then badShape('strike.AT', 1, shape1) end
     if type(shape2) ~= 'table' or not isShape(shape2) then badShape('strike.AT', 2, shape2) end
-    fail(('strike.AT: no narrow phase for kinds %s and %s'):format(shape1.kind, shape2.kind))
+    args.noKernel('strike.AT', shape1.kind, shape2.kind)
   end
   if out == nil then
     out = MTV()

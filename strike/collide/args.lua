@@ -69,4 +69,12 @@ function args.badOut(fname, out, i)
   fail(('%s: argument %d (out) must be a table such as S.MTV(), got %s'):format(fname, i, what(out)))
 end
 
+--- Raise the error for a pair of shape kinds that no narrow phase is registered for.
+---@param fname string
+---@param ka string
+---@param kb string
+function args.noKernel(fname, ka, kb)
+  fail(('%s: no narrow phase for kinds %s and %s'):format(fname, tostring(ka), tostring(kb)))
+end
+
 return args

@@ -74,7 +74,9 @@ function compound.collide(body1, body2, out)
     if s1[MAXX] < s2[MINX] or s2[MAXX] < s1[MINX] or s1[MAXY] < s2[MINY] or s2[MAXY] < s1[MINY] then
       return false -- the bounds do not even meet
     end
-    local m = collideOf[s1.kind][s2.kind](s1, s2, out or tmpA)
+    local collide = collideOf[s1.kind][s2.kind]
+    if not collide then args.noKernel(FNAME, s1.kind, s2.kind) end
+    local m = collide(s1, s2, out or tmpA)
     if not (m.depth > 0) then return false end -- luacheck: ignore 581 (NaN reads as no collision)
     if not out then out = MTV._set(MTV(), m) end
     out.collider, out.collided = r1, r2
@@ -100,7 +102,9 @@ function compound.collide(body1, body2, out)
       -- the narrow phase decides touching), as two tests instead of four: fewer trace
       -- exits under LuaJIT.
       if min(ax1, b[MAXX]) >= max(ax0, b[MINX]) and min(ay1, b[MAXY]) >= max(ay0, b[MINY]) then
-        row[b.kind](a, b, tmp)
+        local collide = row[b.kind]
+        if not collide then args.noKernel(FNAME, a.kind, b.kind) end
+        collide(a, b, tmp)
         local d = tmp.depth
         if d > bestDepth then -- (false for NaN and for separating results)
           best, tmp, found, bestDepth = tmp, best, true, d
