@@ -173,9 +173,13 @@ sat.maxSeparationWalk = maxSeparationWalk
 --- The scanning variant (LuaJIT).
 sat.maxSeparationScan = maxSeparationScan
 
--- The size of round-off in A's separations: its distance from the origin plus its extent.
+-- The size of round-off in A's separations: its distance from the origin plus its extent
+-- (abs written out: an interpreter pays a call for math.abs).
 local function roundScale(A)
-  return abs(A[X]) + abs(A[Y]) + (A[MAXX] - A[MINX]) + (A[MAXY] - A[MINY])
+  local x, y = A[X], A[Y]
+  if x < 0 then x = -x end
+  if y < 0 then y = -y end
+  return x + y + (A[MAXX] - A[MINX]) + (A[MAXY] - A[MINY])
 end
 
 --- Polygon (or edge) A against polygon (or edge) B: the face of either with the largest
