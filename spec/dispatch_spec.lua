@@ -83,3 +83,26 @@ describe('a pair of kinds without a narrow phase', function()
     raisesAt(function() S.triking(c, other) end, 'strike.triking: no narrow phase for kinds specBlob and specBlob')
   end)
 end)
+
+describe('contact ids of a pair registered the other way round', function()
+  -- The id's side (see contact.lua): 0 when the reference face is the MTV's first shape's.
+  local function side(id) return math.floor(id / (4 * 65536 * 65536)) end
+
+  it('name the side as the MTV orders the shapes, for (polygon, chain) as for (chain, polygon)', function()
+    local floor = S.trikers.Chain(0, 0, 100, 0) -- free side above on a LÖVE screen (y down)
+    local seg = floor.shapes[1]
+    local box = S.hapes.Rectangle(50, -5, 10, 10, 0.3) -- a corner about 1.25 px into the floor
+    local m1 = S.AT(box, seg)
+    local m2 = S.AT(seg, box)
+    assert.is_false(m1.separating)
+    assert.equals(-1, m1.edgeIndex) -- the chain's face, the second shape's
+    assert.equals(1, m2.edgeIndex)
+    local c1, c2 = S.ite(m1), S.ite(m2)
+    assert.equals(1, c1.count)
+    assert.equals(1, c2.count)
+    for i = 1, 1 do
+      assert.equals(1, side(c1[i].id))
+      assert.equals(0, side(c2[i].id))
+    end
+  end)
+end)

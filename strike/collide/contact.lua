@@ -68,8 +68,10 @@ local function clip(ax, ay, bx, by, ca, cb, da, db, tag)
 end
 
 -- Clip and keep, with Ref the reference polygon (face r) and I the incident one (face f).
--- Returns the number of points written. `side` is 0 or 1 (see the header).
-local function clipFaces(out, Ref, r, I, f, side)
+-- Returns the number of points written. `side` is 0 or 1 (see the header); `flip` turns it
+-- (the pair is reported the other way round, see contact.polygons).
+local function clipFaces(out, Ref, r, I, f, side, flip)
+  if flip then side = 1 - side end
   local rk, rl = STRIDE * r + BASE, STRIDE * (r < Ref._n and r + 1 or 1) + BASE
   local v1x, v1y, v2x, v2y = Ref[rk], Ref[rk + VY], Ref[rl], Ref[rl + VY]
   local nx, ny = Ref[rk + NX], Ref[rk + NY]
@@ -129,24 +131,25 @@ end
 ---@param depth number
 ---@param edge integer
 ---@param out table
+---@param flip boolean|nil the MTV names B first: the ids' side is turned to match it
 ---@return integer count
-function contact.polygons(A, B, nx, ny, depth, edge, out)
+function contact.polygons(A, B, nx, ny, depth, edge, out, flip)
   local k
   if edge > 0 then
     local k0 = STRIDE * edge + BASE
-    k = clipFaces(out, A, edge, B, (alignedFace(B, -A[k0 + NX], -A[k0 + NY])), 0)
+    k = clipFaces(out, A, edge, B, (alignedFace(B, -A[k0 + NX], -A[k0 + NY])), 0, flip)
   elseif edge < 0 then
     local k0 = STRIDE * (-edge) + BASE
-    k = clipFaces(out, B, -edge, A, (alignedFace(A, -B[k0 + NX], -B[k0 + NY])), 1)
+    k = clipFaces(out, B, -edge, A, (alignedFace(A, -B[k0 + NX], -B[k0 + NY])), 1, flip)
   else -- (an MTV made by hand: look the reference face up)
     local fa, alignA = alignedFace(A, nx, ny)
     local fb, alignB = alignedFace(B, -nx, -ny)
     if alignB > alignA + 1e-6 then
       local k0 = STRIDE * fb + BASE
-      k = clipFaces(out, B, fb, A, (alignedFace(A, -B[k0 + NX], -B[k0 + NY])), 1)
+      k = clipFaces(out, B, fb, A, (alignedFace(A, -B[k0 + NX], -B[k0 + NY])), 1, flip)
     else
       local k0 = STRIDE * fa + BASE
-      k = clipFaces(out, A, fa, B, (alignedFace(B, -A[k0 + NX], -A[k0 + NY])), 0)
+      k = clipFaces(out, A, fa, B, (alignedFace(B, -A[k0 + NX], -A[k0 + NY])), 0, flip)
     end
   end
   if k == 0 then

@@ -23,8 +23,8 @@
 --- register(ka, kb, ops) fills both orders: (kb, ka) gets the same kernels with the
 --- arguments swapped and the results turned around (the way Box2D's b2AddType registers
 --- a pair once). A kernel written for (ka, kb) takes a last argument `flip`: when true it
---- must report the pair as (kb, ka); collide kernels rely on it, contact kernels need not
---- (a contact is the same points either way round; the normal and edge are turned).
+--- must report the pair as (kb, ka). Contact kernels get the normal and edge turned, and
+--- `flip` only for what depends on the order (the side in a contact id).
 local dispatch = {}
 
 --- Per-kind operations, dispatch.kind[kind].
@@ -89,7 +89,7 @@ function dispatch.register(ka, kb, ops)
   dispatch.collide[kb][ka] = reversed
   row(kb)[ka] = {
     collide = reversed,
-    contact = function(b, a, nx, ny, depth, edge, out) return contact(a, b, -nx, -ny, depth, -edge, out) end,
+    contact = function(b, a, nx, ny, depth, edge, out) return contact(a, b, -nx, -ny, depth, -edge, out, true) end,
     distance = false,
     toi = false,
   }
