@@ -155,6 +155,19 @@ describe('a user-defined collider', function()
   end)
 end)
 
+describe('a collider whose constructor only adds (no Collider.new)', function()
+  local Twin = S.trikers.Collider:extend()
+  function Twin:new(x, y) self:add(S.hapes.Circle(x, y, 5), S.hapes.Rectangle(x, y + 5, 10, 10)) end
+
+  it('collides at once, before any other query', function()
+    local m = S.triking(Twin(0, 0), S.trikers.Circle(3, 0, 2))
+    assert.truthy(m)
+    near(m.depth, 4)
+    assert.truthy(S.triking(S.trikers.Circle(3, 0, 2), Twin(0, 0)))
+    assert.is_true(S.aabb(Twin(0, 0), S.trikers.Circle(3, 0, 2)))
+  end)
+end)
+
 describe('a collider file dropped into strike/colliders/', function()
   local path = 'strike/colliders/SpecDroppedPair.lua'
   local source = [[

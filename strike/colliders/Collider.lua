@@ -84,6 +84,12 @@ function Collider:add(...)
   if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:add') end
   local shapes = self.shapes
   if not shapes then shapes = {}; self.shapes = shapes end
+  if self._single == nil then
+    -- (a collider whose constructor adds without calling Collider.new, as the original
+    -- Strike's walkthrough does: its cache fields start here, see the cache protocol)
+    if self._angle == nil then self._angle = 0 end
+    self._leavesOK, self._massOK, self._clean, self._single = false, false, false, false
+  end
   for i = 1, select('#', ...) do
     local child = select(i, ...)
     if not (isShape(child) or isCollider(child)) then
