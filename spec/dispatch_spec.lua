@@ -82,6 +82,11 @@ describe('a pair of kinds without a narrow phase', function()
     local c = S.trikers.Collider(S.hapes.SpecBlob(0, 0, 2), S.hapes.Circle(50, 0, 1))
     raisesAt(function() S.triking(c, other) end, 'strike.triking: no narrow phase for kinds specBlob and specBlob')
   end)
+
+  it('S.ite on a hand-made MTV between them names both kinds', function()
+    local m = S.MTV(1, 0, blob, other)
+    raisesAt(function() S.ite(m) end, 'strike.ite: no narrow phase for kinds specBlob and specBlob')
+  end)
 end)
 
 describe('contact ids of a pair registered the other way round', function()

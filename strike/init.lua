@@ -132,6 +132,7 @@ function S.ite(mtv, out)
       :format(field, what(v)))
   end
   local ops = pair[a.kind][b.kind]
+  if not ops then args.noKernel('strike.ite', a.kind, b.kind) end
   local m = mtv
   if a._pose ~= mtv._poseA or b._pose ~= mtv._poseB then
     m = ops.collide(a, b, scratch)
