@@ -45,6 +45,7 @@ local ROOT = (...):match('^(.-)%.collide%.[^%.]+$')
 local check = require(ROOT .. '.check')
 local layout = require(ROOT .. '.base.layout')
 local kinds = require(ROOT .. '.collide.dispatch').kind
+local limits = require(ROOT .. '.limits')
 
 local X, Y, R = layout.X, layout.Y, layout.R
 local STRIDE, FIRST, VY, NX, NY, D = layout.STRIDE, layout.FIRST, layout.VY, layout.NX, layout.NY, layout.D
@@ -118,20 +119,10 @@ end
 
 -- Geometry ---------------------------------------------------------------------------
 
---- The unit vector along (dx, dy) (not the zero vector) and the length of (dx, dy).
---- Scaled by the larger component first, so that neither overflow nor underflow can
---- spoil the result; the length may be math.huge for vectors longer than that.
----@param dx number
----@param dy number
----@return number ux, number uy, number length
-function ray.unit(dx, dy)
-  local m, ay = abs(dx), abs(dy)
-  if ay > m then m = ay end
-  local x, y = dx / m, dy / m
-  local l = sqrt(x * x + y * y)
-  return x / l, y / l, m * l
-end
-local unit = ray.unit
+-- The unit vector along (dx, dy) and its length, scaled by the larger component first so
+-- that neither overflow nor underflow spoils it (limits.unit; a ray's direction is never
+-- the zero vector, checkRay refuses it).
+local unit = limits.unit
 
 --- Cyrus–Beck clipping of the ray (origin (ox, oy), unit direction (ux, uy)) against a
 --- convex polygon (3 or more vertices). Returns the interval lo, hi of the whole line
@@ -244,16 +235,14 @@ function ray.vertexShape(s, ox, oy, ux, uy)
   return polygonClip(s, ox, oy, ux, uy)
 end
 
--- The outward unit normal of a circle along (hx, hy), the hit point relative to the centre,
--- scaled before it is squared so that tiny or huge circles still give a unit vector; -u
--- when it is the zero vector (a circle of radius 0: a point, whose normal faces the ray).
+-- The outward unit normal of a circle along (hx, hy), the hit point relative to the centre
+-- (limits.unit: scaled before it is squared, so that tiny or huge circles still give a unit
+-- vector); -u when there is none (the zero vector: a circle of radius 0, a point, whose
+-- normal faces the ray; or a component that overflowed, which makes it NaN).
 local function circleNormal(hx, hy, ux, uy)
-  local m = abs(hx)
-  if abs(hy) > m then m = abs(hy) end
-  if not (m > 0) or m == huge then return -ux, -uy end -- luacheck: ignore 581
-  hx, hy = hx / m, hy / m
-  local l = sqrt(hx * hx + hy * hy)
-  return hx / l, hy / l
+  local nx, ny = unit(hx, hy)
+  if nx and nx == nx then return nx, ny end
+  return -ux, -uy
 end
 
 --- The ray against a circle: lo, hi (lo <= hi, hi >= 0) and the outward unit normals there,
