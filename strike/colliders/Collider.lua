@@ -38,6 +38,7 @@ local unpack = require(ROOT .. '.compat').unpack
 local rotate = require(ROOT .. '.vec').rotate
 local checkPose = Shape._checkPose
 local layout = require(ROOT .. '.base.layout')
+local args = require(ROOT .. '.collide.args')
 
 local cos, sin, huge = math.cos, math.sin, math.huge
 local number, positive, optPoint, fail, describe = check.number, check.positive, check.optPoint, check.fail,
@@ -95,15 +96,12 @@ function Collider:add(...)
     if not (isShape(child) or isCollider(child)) then
       fail(('strike.Collider:add: argument %d must be a strike shape or collider, got %s'):format(i, describe(child)))
     end
+    -- (an instance whose constructor never ran: args names what its class lacks, if
+    -- anything, or says it was not built; a built shape's class was checked when it was)
     if isShape(child) then
-      Shape.checkClass(getmetatable(child), ('strike.Collider:add: argument %d (a %s)'):format(i, tostring(child.name)))
-      if child._pose == nil then
-        fail(('strike.Collider:add: argument %d (a %s) was not built by a strike shape constructor (its new must'
-          .. ' call the parent\'s: Class.super.new(self, ...))'):format(i, tostring(child.name)))
-      end
+      if child._pose == nil then args.badShape('strike.Collider:add', i, child) end
     elseif child._single == nil then
-      fail(('strike.Collider:add: argument %d (a %s) was not built by a strike collider constructor (its new'
-        .. ' must call the parent\'s: Class.super.new(self, ...))'):format(i, tostring(child.name)))
+      args.badBody('strike.Collider:add', i, child)
     end
     if child.parent then
       fail(('strike.Collider:add: argument %d already belongs to a collider; remove it first or add a copy'):format(i))
