@@ -29,17 +29,13 @@ local compound = {}
 local tmpA, tmpB = MTV(), MTV()
 local one1, one2 = {}, {}
 
---- Fill the fields of `out` that name the bodies and the poses it was computed for.
----@param out strike.MTV
----@param r1 table the first body's root
----@param r2 table the second body's root
----@return strike.MTV out
-function compound.stamp(out, r1, r2)
+-- Fill the fields of `out` that name the bodies and the poses it was computed for (S.AT
+-- and the one-leaf path below write the same fields inline).
+local function stamp(out, r1, r2)
   out.collider, out.collided = r1, r2
   out._poseA, out._poseB = out.colliderShape._pose, out.collidedShape._pose
   return out
 end
-local stamp = compound.stamp
 
 --- The deepest MTV between the leaves of two bodies (see the header), filled into `out`
 --- when given (its contents are unspecified after false), or false.
