@@ -39,6 +39,9 @@
 -- are exact comparisons or orientation tests with these margins, so its diagonals are the
 -- ones exact arithmetic would give. The pieces are made of the caller's own coordinates (never
 -- recomputed points), so a piece vertex is always exactly an input vertex.
+local ROOT = (...):match('^(.-)%.geometry%.[^%.]+$')
+local hull = require(ROOT .. '.geometry.hull')
+
 local decompose = {}
 
 local abs, sqrt, floor, max, min = math.abs, math.sqrt, math.floor, math.max, math.min
@@ -125,15 +128,7 @@ end
 --- Vertex indices 1..m sorted by U, then V, then index: the order of a sweep along U (ties
 --- broken as if the sweep line were turned a little), and each vertex's rank in it.
 local function sweepOrder(U, V, m)
-  local order, rank = {}, {}
-  for i = 1, m do order[i] = i end
-  table.sort(order, function(i, j)
-    local ui, uj = U[i], U[j]
-    if ui ~= uj then return ui < uj end
-    local vi, vj = V[i], V[j]
-    if vi ~= vj then return vi < vj end
-    return i < j
-  end)
+  local order, rank = hull.order(U, V, m), {}
   for k = 1, m do rank[order[k]] = k end
   return order, rank
 end

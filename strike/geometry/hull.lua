@@ -17,13 +17,13 @@ local function leftTurn(ox, oy, ax, ay, bx, by)
   return c > EPS * sqrt(ux * ux + uy * uy) * sqrt(vx * vx + vy * vy)
 end
 
---- Hull of the points (xs[i], ys[i]), i = 1..n, in positive winding (positive shoelace
---- area), without duplicate or collinear vertices.
+--- The indices 1..n sorted by x, then y, then index (a total order: the result does not
+--- depend on table.sort's choices). The hull's scan order, and decompose's sweep order.
 ---@param xs number[]
 ---@param ys number[]
 ---@param n integer
----@return number[] hx, number[] hy, integer count, integer distinct number of distinct input points
-function hull.build(xs, ys, n)
+---@return integer[]
+function hull.order(xs, ys, n)
   local idx = {}
   for i = 1, n do idx[i] = i end
   table.sort(idx, function(a, b)
@@ -33,6 +33,17 @@ function hull.build(xs, ys, n)
     if ya ~= yb then return ya < yb end
     return a < b
   end)
+  return idx
+end
+
+--- Hull of the points (xs[i], ys[i]), i = 1..n, in positive winding (positive shoelace
+--- area), without duplicate or collinear vertices.
+---@param xs number[]
+---@param ys number[]
+---@param n integer
+---@return number[] hx, number[] hy, integer count, integer distinct number of distinct input points
+function hull.build(xs, ys, n)
+  local idx = hull.order(xs, ys, n)
   -- drop exact duplicates
   local px, py, m = {}, {}, 0
   for k = 1, n do
