@@ -59,10 +59,12 @@ local METHODS = {
     containsPoint = { 'shape', 'strike.Shape:containsPoint' },
     ipairs = { 'shape', 'strike.Shape:ipairs' },
     vecs = { 'shape', 'strike.Shape:vecs' },
+    getRounding = { 'shape', 'strike.Shape:getRounding' },
   } },
   { 'Circle', H.Circle, {
     new = { 'new', 'strike.Circle:new' },
     getRadius = { 'shape', 'strike.Shape:getRadius' },
+    getRounding = { 'shape', 'strike.Shape:getRounding' },
     project = { 'shape', 'strike.Shape:project' },
     containsPoint = { 'shape', 'strike.Shape:containsPoint' },
     getVertex = { 'shape', 'strike.Shape:getVertex' },
@@ -77,6 +79,11 @@ local METHODS = {
   { 'ConvexPolygon', H.ConvexPolygon, {
     new = { 'new', 'strike.ConvexPolygon:new' },
     merge = { 'shape', 'strike.ConvexPolygon:merge' },
+    unpack = { 'shape', 'strike.Shape:unpack' },
+  } },
+  { 'Capsule', H.Capsule, {
+    new = { 'new', 'strike.Capsule:new' },
+    getDimensions = { 'shape', 'strike.Capsule:getDimensions' },
     unpack = { 'shape', 'strike.Shape:unpack' },
   } },
   { 'Edge', H.Edge, {
@@ -141,8 +148,6 @@ local METHODS = {
   } },
   { 'Capsule', T.Capsule, {
     new = { 'new', 'strike.Capsule:new' },
-    getArea = { 'collider', 'strike.Collider:getArea' },
-    getAreaCentroid = { 'collider', 'strike.Collider:getAreaCentroid' },
     getDimensions = { 'collider', 'strike.Capsule:getDimensions' },
   } },
   { 'Chain', T.Chain, {

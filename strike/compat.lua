@@ -4,4 +4,7 @@ local compat = {}
 --- table.unpack on 5.2+, the global unpack on 5.1 and LuaJIT.
 compat.unpack = table.unpack or unpack -- luacheck: ignore 113 143
 
+--- math.atan2 on 5.1, 5.2 and LuaJIT; math.atan with two arguments on 5.3+ (5.4 has no atan2).
+compat.atan2 = math.atan2 or math.atan -- luacheck: ignore 143
+
 return compat

@@ -33,7 +33,8 @@ S.hapes, S.trikers = registry.new()
 S.MTV = MTV
 
 -- Built-in classes, registered eagerly so that pairs(S.hapes) lists them.
-for _, name in ipairs({ 'ConvexPolygon', 'Circle', 'Edge', 'Ellipse', 'Rectangle', 'RegularPolygon', 'Point' }) do
+local SHAPES = { 'ConvexPolygon', 'Circle', 'Edge', 'Ellipse', 'Rectangle', 'RegularPolygon', 'Point', 'Capsule' }
+for _, name in ipairs(SHAPES) do
   S.hapes[name] = require(ROOT .. '.shapes.' .. name)
   local _ = S.trikers[name]
 end

@@ -12,6 +12,11 @@
 ---   _half       n / 2 when the polygon is centrally symmetric (normal i + n/2 is exactly
 ---               -normal i: rectangles, even regular polygons, edges), else 0; the narrow
 ---               phase then gets two faces' separations from one projection of the other shape.
+---   _round      the rounding radius, unscaled: 0 for a sharp polygon; r > 0 for a rounded
+---               shape (a capsule, a rounded rectangle or polygon), which is every point within
+---               r of its polygon, the core (the vertices above are the core's). Its world
+---               value is the header's slot R; a rounded shape has the kind 'rounded'
+---               (collide/rounded.lua), a sharp one 'polygon'.
 local ROOT = (...):match('^(.-)%.base%.[^%.]+$')
 local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
@@ -85,7 +90,19 @@ function VertexShape:_setVertices(xs, ys, n, cx, cy, area)
   for k = 1, size do self[k] = 0 end
   for k = #self, size + 1, -1 do self[k] = nil end
   self._area, self._radius, self._short = area, sqrt(r2), short
+  self._round = 0
   self:_setPose(cx, cy)
+end
+
+--- Make the shape rounded by r (> 0, unscaled, validated): every point within r of its
+--- polygon. Call after _setVertices, with the vertices laid out about the rounded shape's
+--- centroid and `_area` already the rounded area (geometry/polygon.lua: rounded).
+---@param r number
+function VertexShape:_setRounding(r)
+  self._round = r + 0.0
+  self._radius = self._radius + r
+  self.kind = 'rounded'
+  self._dirty = true
 end
 
 function VertexShape:_refresh()
@@ -111,8 +128,9 @@ function VertexShape:_refresh()
     local r = STRIDE * i + BASE
     self[r], self[r + VY], self[r + NX], self[r + NY], self[r + D] = px, py, nx, ny, nx * px + ny * py
   end
-  self[MINX], self[MINY], self[MAXX], self[MAXY] = minx, miny, maxx, maxy
-  self[R] = 0
+  local r = self._round * k
+  self[MINX], self[MINY], self[MAXX], self[MAXY] = minx - r, miny - r, maxx + r, maxy + r
+  self[R] = r
   self._dirty = false
 end
 
@@ -196,7 +214,33 @@ function VertexShape:project(nx, ny)
     if d < lo then lo = d end
     if d > hi then hi = d end
   end
-  return lo, hi
+  local r = self[R] -- (a rounded shape reaches r beyond its core along any unit vector)
+  return lo - r, hi + r
+end
+
+--- The rounding radius now: the shape is every point within it of its vertices' polygon
+--- (0 for a sharp polygon or an edge; a capsule's cap radius).
+---@return number
+function VertexShape:getRounding()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getRounding') end
+  return self._round * self._scale
+end
+
+-- The squared distance from (x, y) to the segment from (x1, y1) to (x2, y2).
+local function segmentDistance2(x, y, x1, y1, x2, y2)
+  local ex, ey = x2 - x1, y2 - y1
+  local px, py = x - x1, y - y1
+  local t = px * ex + py * ey
+  if t > 0 then
+    local e2 = ex * ex + ey * ey
+    if t >= e2 then
+      px, py = x - x2, y - y2
+    else
+      t = t / e2
+      px, py = px - t * ex, py - t * ey
+    end
+  end
+  return px * px + py * py
 end
 
 --- Index of the vertex farthest along (nx, ny); the lowest index wins ties.
@@ -226,8 +270,27 @@ function VertexShape:containsPoint(x, y)
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:containsPoint') end
   x, y = Shape._point(x, y, 'strike.Shape:containsPoint')
   if self._dirty then self:_refresh() end
-  if self._n < 3 then return false end
-  for k = FIRST, STRIDE * self._n + BASE, STRIDE do
+  local r, n = self[R], self._n
+  if r > 0 then
+    -- rounded: inside when nearer than r to the core (the largest face separation when the
+    -- point is in front of some face, else 0: inside the core)
+    local best = -huge
+    for k = FIRST, STRIDE * n + BASE, STRIDE do
+      local s = (x - self[k]) * self[k + NX] + (y - self[k + VY]) * self[k + NY]
+      if s > best then best = s end
+    end
+    if best >= r then return false end
+    if best <= 0 and n >= 3 then return true end
+    local d2 = huge
+    for i = 1, n do -- (the nearest edge: a point beyond a corner is nearest to a vertex)
+      local k, l = STRIDE * i + BASE, STRIDE * (i < n and i + 1 or 1) + BASE
+      local e = segmentDistance2(x, y, self[k], self[k + VY], self[l], self[l + VY])
+      if e < d2 then d2 = e end
+    end
+    return d2 < r * r
+  end
+  if n < 3 then return false end
+  for k = FIRST, STRIDE * n + BASE, STRIDE do
     if (x - self[k]) * self[k + NX] + (y - self[k + VY]) * self[k + NY] >= 0 then return false end
   end
   return true
@@ -280,7 +343,7 @@ function VertexShape:_farthest(px, py)
     local d = dx * dx + dy * dy
     if d > best then best = d end
   end
-  return sqrt(best)
+  return sqrt(best) + self[R]
 end
 
 return VertexShape

@@ -4,7 +4,8 @@
 --- use it. Written for strike; it writes into an MTV-shaped `out` and allocates nothing.
 ---
 --- A chain segment S has the endpoints p1, p2 and the free-side normal n (face 1's).
---- Against a polygon, an edge or a circle B, with m the MTV normal from S toward B:
+--- Against a polygon, an edge, a rounded shape or a circle B, with m the MTV normal from S
+--- toward B (a rounded shape's measures below reach its radius further):
 ---  1. The ordinary edge test (sat.lua, S as a two-vertex polygon). A separating result
 ---     is returned as it is.
 ---  2. One-sided: when B's centroid is behind S's line, n . (c - p1) < 0, there is no
@@ -33,6 +34,7 @@ local sat = require(ROOT .. '.collide.sat')
 local layout = require(ROOT .. '.base.layout')
 
 local result, polygonPolygon, polygonCircle = sat.result, sat.polygonPolygon, sat.polygonCircle
+local roundedCollide = require(ROOT .. '.collide.rounded').collide
 local huge = math.huge
 local X, Y, R = layout.X, layout.Y, layout.R
 local STRIDE, FIRST, VY, NX, NY = layout.STRIDE, layout.FIRST, layout.VY, layout.NX, layout.NY
@@ -65,16 +67,19 @@ end
 ---@return boolean
 chain.admissible = admissible
 
--- Steps 4 and 5 for a polygon P: false when the neighbour owns the contact, else the depth
+-- Steps 4 and 5 for a polygon P (rounded by P[R], 0 for a sharp one: every measure of P
+-- reaches that much further): false when the neighbour owns the contact, else the depth
 -- of the push along n.
 local function polygonVerdict(S, P, mx, my)
   local nx, ny, x1, y1 = S[P1 + NX], S[P1 + NY], S[P1], S[P1 + VY]
   local lastP = STRIDE * P._n + BASE
+  local rp = P[R]
   local sepN = huge
   for r = FIRST, lastP, STRIDE do
     local s = nx * (P[r] - x1) + ny * (P[r + VY] - y1)
     if s < sepN then sepN = s end
   end
+  sepN = sepN - rp
   local c = nx * my - ny * mx
   if c < 0 and S._hasPrev and S._convex1 then
     local gx, gy = S._g1x, S._g1y
@@ -85,7 +90,7 @@ local function polygonVerdict(S, P, mx, my)
       if r < reach then reach = r end
       if s < sepG then sepG = s end
     end
-    if reach < 0 and sepG > sepN then return false end
+    if reach - rp < 0 and sepG - rp > sepN then return false end
   elseif c > 0 and S._hasNext and S._convex2 then
     local gx, gy = S._g2x, S._g2y
     local x2, y2 = S[P2], S[P2 + VY]
@@ -96,7 +101,7 @@ local function polygonVerdict(S, P, mx, my)
       if r > reach then reach = r end
       if s < sepG then sepG = s end
     end
-    if reach > 0 and sepG > sepN then return false end
+    if reach + rp > 0 and sepG - rp > sepN then return false end
   end
   return -sepN
 end
@@ -144,6 +149,18 @@ end
 ---@return table out
 function chain.chainPolygon(S, P, out, flip)
   local m = flip and polygonPolygon(P, S, out) or polygonPolygon(S, P, out)
+  return ghostRules(S, P, m, flip, polygonVerdict)
+end
+
+--- Chain segment S against a rounded shape P (collide/rounded.lua); with `flip`, reported
+--- as P against S.
+---@param S strike.ChainSegment
+---@param P strike.VertexShape
+---@param out table an MTV-shaped table
+---@param flip boolean|nil
+---@return table out
+function chain.chainRounded(S, P, out, flip)
+  local m = flip and roundedCollide(P, S, out) or roundedCollide(S, P, out)
   return ghostRules(S, P, m, flip, polygonVerdict)
 end
 

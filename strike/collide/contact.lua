@@ -89,19 +89,26 @@ local function clipFaces(out, Ref, r, I, f, side, flip)
   local hi = tx * v2x + ty * v2y
   ax, ay, bx, by, ca, cb = clip(ax, ay, bx, by, ca, cb, hi - (tx * ax + ty * ay), hi - (tx * bx + ty * by), 3)
   if not ax then return 0 end
-  -- keep what is behind the reference face
+  -- keep what is behind the reference face (rounded shapes: their surfaces are rr in front
+  -- of the reference core's face and ri in front of the incident core's, so a point is
+  -- kept when its core separation s is below rr + ri, at depth rr + ri - s, midway between
+  -- the surfaces; both are 0 for sharp polygons)
+  local rr, ri = Ref[R], I[R]
+  local reach = rr + ri
   local off = nx * v1x + ny * v1y
   local idBase = ((side * 65536 + r) * 65536 + f) * 4
   local k = 0
   local sa = nx * ax + ny * ay - off
-  if sa < 0 then
+  if sa < reach then
     k = k + 1
-    setPoint(out, k, ax - nx * sa / 2, ay - ny * sa / 2, -sa, idBase + ca)
+    local h = (rr - ri - sa) / 2
+    setPoint(out, k, ax + nx * h, ay + ny * h, reach - sa, idBase + ca)
   end
   local sb = nx * bx + ny * by - off
-  if sb < 0 then
+  if sb < reach then
     k = k + 1
-    setPoint(out, k, bx - nx * sb / 2, by - ny * sb / 2, -sb, idBase + cb)
+    local h = (rr - ri - sb) / 2
+    setPoint(out, k, bx + nx * h, by + ny * h, reach - sb, idBase + cb)
   end
   return k
 end
@@ -161,10 +168,54 @@ function contact.polygons(A, B, nx, ny, depth, edge, out, flip)
       if p < best then best, bj = p, j end
     end
     local q = STRIDE * bj + BASE
-    setPoint(out, 1, B[q] + nx * depth / 2, B[q + VY] + ny * depth / 2, depth, bj)
+    local h = depth / 2 - B[R] -- (from B's core to midway between the surfaces)
+    setPoint(out, 1, B[q] + nx * h, B[q + VY] + ny * h, depth, bj)
     k = 1
   end
   return k
+end
+
+-- Cosine above which the normal is a face's: the manifold is clipped from faces.
+local ALIGNED = 1 - 1e-9
+
+--- A rounded shape (collide/rounded.lua) against a rounded shape or a polygon: clipping as
+--- for polygons (contact.polygons, the cores' faces, the radii added) when the normal is
+--- a face's; otherwise the rounded corners touch, and the one point is midway between
+--- them: A's core vertex farthest along the normal pushed out by A's radius, and B's
+--- farthest against it pushed back by B's; its id is ((2 * 65536 + a) * 65536 + b) * 4 for
+--- the vertices a of the MTV's first shape and b of its second (side 2).
+---@param A strike.VertexShape
+---@param B strike.VertexShape
+---@param nx number
+---@param ny number
+---@param depth number
+---@param edge integer
+---@param out table
+---@param flip boolean|nil the MTV names B first
+---@return integer count
+function contact.rounded(A, B, nx, ny, depth, edge, out, flip)
+  if edge ~= 0 then return contact.polygons(A, B, nx, ny, depth, edge, out, flip) end
+  local _, alignA = alignedFace(A, nx, ny)
+  local _, alignB = alignedFace(B, -nx, -ny)
+  if alignA >= ALIGNED or alignB >= ALIGNED then return contact.polygons(A, B, nx, ny, depth, edge, out, flip) end
+  local ia, ib, pa, pb = 1, 1, -huge, huge
+  for i = 1, A._n do
+    local q = STRIDE * i + BASE
+    local p = nx * A[q] + ny * A[q + VY]
+    if p > pa then pa, ia = p, i end
+  end
+  for j = 1, B._n do
+    local q = STRIDE * j + BASE
+    local p = nx * B[q] + ny * B[q + VY]
+    if p < pb then pb, ib = p, j end
+  end
+  local qa, qb = STRIDE * ia + BASE, STRIDE * ib + BASE
+  local ra, rb = A[R], B[R]
+  local x = (A[qa] + nx * ra + B[qb] - nx * rb) / 2
+  local y = (A[qa + VY] + ny * ra + B[qb + VY] - ny * rb) / 2
+  if flip then ia, ib = ib, ia end
+  setPoint(out, 1, x, y, depth, ((2 * 65536 + ia) * 65536 + ib) * 4)
+  return 1
 end
 
 --- Polygon (or edge, or chain segment) P against circle C: one point, midway between the

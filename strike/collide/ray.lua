@@ -294,6 +294,60 @@ function ray.circle(s, ox, oy, ux, uy)
   return t1, t2, nxLo, nyLo, nxHi, nyHi
 end
 
+--- The ray against a rounded shape (collide/rounded.lua: a core and a radius r): its
+--- boundary is the core's faces moved out by r (kept where the foot of the point lies on
+--- the face) and arcs of the circles of radius r about the core's vertices. Every point of
+--- those whole circles is within r of the core, so it lies in the shape: the interval of
+--- the line inside the (convex) shape runs from the smallest to the largest parameter at
+--- which the line meets any face or any such circle. Returns lo, hi and the outward unit
+--- normals there (a face's, or (hit - vertex) / r), or nil when the ray misses.
+---@param s strike.VertexShape
+---@param ox number
+---@param oy number
+---@param ux number
+---@param uy number
+---@return number|nil lo
+---@return number hi
+---@return number nxLo
+---@return number nyLo
+---@return number nxHi
+---@return number nyHi
+function ray.rounded(s, ox, oy, ux, uy)
+  if s._dirty then s:_refresh() end
+  local r, n = s[R], s._n
+  local lo, hi, nxLo, nyLo, nxHi, nyHi = huge, -huge, 0, 0, 0, 0
+  for i = 1, n do
+    local k, l = STRIDE * i + BASE, STRIDE * (i < n and i + 1 or 1) + BASE
+    local vx, vy = s[k], s[k + VY]
+    -- the circle about vertex i: t^2 + 2 b t + c = 0 with m = o - v (see ray.circle)
+    local mx, my = ox - vx, oy - vy
+    local b = mx * ux + my * uy
+    local px, py = mx - b * ux, my - b * uy
+    local disc = r * r - (px * px + py * py)
+    if disc >= 0 then
+      local root = sqrt(disc)
+      local t1, t2 = -b - root, -b + root
+      if t1 < lo then lo, nxLo, nyLo = t1, (px - root * ux) / r, (py - root * uy) / r end
+      if t2 > hi then hi, nxHi, nyHi = t2, (px + root * ux) / r, (py + root * uy) / r end
+    end
+    -- face i moved out by r, where it is the boundary
+    local nx, ny = s[k + NX], s[k + NY]
+    local den = nx * ux + ny * uy
+    local ex, ey = s[l] - vx, s[l + VY] - vy
+    local e2 = ex * ex + ey * ey
+    if den ~= 0 and e2 > 0 then
+      local t = (s[k + D] + r - (nx * ox + ny * oy)) / den
+      local f = (ox + t * ux - vx) * ex + (oy + t * uy - vy) * ey
+      if f >= 0 and f <= e2 then
+        if t < lo then lo, nxLo, nyLo = t, nx, ny end
+        if t > hi then hi, nxHi, nyHi = t, nx, ny end
+      end
+    end
+  end
+  if not (hi >= 0) or hi == huge or lo == huge then return nil end -- luacheck: ignore 581 (NaN reads as a miss)
+  return lo, hi, nxLo, nyLo, nxHi, nyHi
+end
+
 -- Where span's kernel measured from: the point (shiftX, shiftY), at distance shiftT along
 -- the ray from its origin (0 and the origin itself unless the origin is far).
 local shiftT, shiftX, shiftY = 0, 0, 0

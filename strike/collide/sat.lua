@@ -9,7 +9,9 @@
 --- normals of the Minkowski difference A - B, so this is the exact minimum translation,
 --- and its sign comes from the face, never from the centroids.
 --- Circle against polygon uses the closest feature (face, or vertex Voronoi region), as in
---- Box2D's b2CollidePolygonAndCircle; circle against circle uses the centre line.
+--- Box2D's b2CollidePolygonAndCircle, with the polygon's rounding radius (slot R, 0 unless
+--- it is rounded: collide/rounded.lua) added to the circle's; circle against circle uses
+--- the centre line.
 ---
 --- Touching (depth exactly 0) is not a collision.
 ---
@@ -181,6 +183,8 @@ local function roundScale(A)
   if y < 0 then y = -y end
   return x + y + (A[MAXX] - A[MINX]) + (A[MAXY] - A[MINY])
 end
+--- roundScale(A): the size of round-off in A's separations (for the hysteresis).
+sat.roundScale = roundScale
 
 --- Polygon (or edge) A against polygon (or edge) B: the face of either with the largest
 --- separation gives the MTV (A's face unless B's is larger beyond the hysteresis).
@@ -206,7 +210,7 @@ end
 local function polygonCircle(P, C, out, flip)
   if P._dirty then P:_refresh() end
   if C._dirty then C:_refresh() end
-  local cx, cy, r = C[X], C[Y], C[R]
+  local cx, cy, r = C[X], C[Y], C[R] + P[R] -- (a rounded P reaches P[R] beyond its core)
   local n = P._n
   local best, bi = -huge, 1
   local stride, yOff, nxOff, nyOff = STRIDE, VY, NX, NY -- (locals: see maxSeparationWalk)

@@ -65,6 +65,13 @@ function Circle:getRadius()
   return self._r * self._scale
 end
 
+--- The rounding radius: a circle is a point rounded by its radius (the same as getRadius).
+---@return number
+function Circle:getRounding()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getRounding') end
+  return self._r * self._scale
+end
+
 --- Minimum and maximum of the projection on the unit vector (nx, ny).
 ---@param nx number
 ---@param ny number

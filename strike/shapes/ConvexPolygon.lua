@@ -25,11 +25,17 @@ ConvexPolygon.name = 'ConvexPolygon'
 --- Errors: fewer than 3 distinct non-collinear points, a concave outline (use
 --- S.trikers.Concave), values that are not finite numbers, or a size outside strike's
 --- limits (strike/limits.lua: edges at least 1e-100, radius at most 1e100).
+--- Rounded: a table with a `radius` field, {x1, y1, ..., radius = r} (r > 0), gives every
+--- point within r of that polygon (it grows by r; its vertices stay the polygon's, its
+--- kind is 'rounded').
 ---@param ... number|number[]
 function ConvexPolygon:new(...)
   if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.ConvexPolygon:new') end
   local fname = self._fname or 'strike.' .. (self.name or 'ConvexPolygon') -- (_fname: see Concave.lua)
   local xs, ys, n = check.coordinates(fname, ...)
+  local first = ...
+  local rounding = type(first) == 'table' and first.radius or nil
+  if rounding ~= nil then ConvexPolygon._checkRounding(fname, rounding) end
   for i = 1, n do xs[i], ys[i] = xs[i] + 0.0, ys[i] + 0.0 end -- (floats: integer products wrap on Lua 5.3+)
   local x0, y0, x1, y1 = math.huge, math.huge, -math.huge, -math.huge
   for i = 1, n do
@@ -68,8 +74,22 @@ function ConvexPolygon:new(...)
   if not (finite(area) and finite(cx) and finite(cy)) or area <= 0 then
     fail(('%s: coordinates too large or too close together (area %s)'):format(fname, describe(area)))
   end
+  if rounding then area, cx, cy = polygon.rounded(hx, hy, h, area, cx, cy, rounding) end
   self:_setVertices(hx, hy, h, cx, cy, area)
+  if rounding then self:_setRounding(rounding) end
   self:_checkNew(fname)
+end
+
+--- Raise an error at the caller's line unless r is a rounding radius strike accepts: a
+--- number from MIN_LENGTH to MAX_LENGTH (limits.lua). `fname` names the constructor.
+---@param fname string
+---@param r any
+function ConvexPolygon._checkRounding(fname, r)
+  check.positive(r, fname, 'radius')
+  if r < MIN_LENGTH or r > MAX_LENGTH then
+    fail(('%s: radius out of range: got %s, strike accepts lengths from %s to %s'):format(fname, describe(r),
+      describe(MIN_LENGTH), describe(MAX_LENGTH)))
+  end
 end
 
 --- The union of this polygon and `other` as a new ConvexPolygon when that union is convex
@@ -82,6 +102,7 @@ end
 function ConvexPolygon:merge(other)
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.ConvexPolygon:merge') end
   if type(other) ~= 'table' or other.kind ~= 'polygon' or not other._n or other._n < 3 then return false end
+  if self.kind ~= 'polygon' then return false end -- (a rounded polygon's union is never a polygon)
   if self._dirty then self:_refresh() end
   if other._dirty then other:_refresh() end
   local tol = 1e-9 * max(self:getRadius(), other:getRadius())

@@ -10,12 +10,16 @@ Rectangle.name = 'Rectangle'
 
 --- A dx-by-dy rectangle (dy defaults to dx) centred on (x, y), turned by `angle` radians.
 --- Unrotated, edge 1 is the min-y side (normal (0, -1)), then +x, max-y and -x.
+--- With `radius` (> 0, below half the shorter side) its corners are rounded by it: it still
+--- spans dx by dy; its vertices are those of its core, the (dx - 2 radius) by
+--- (dy - 2 radius) rectangle, and its kind is 'rounded'.
 ---@param x number
 ---@param y number
 ---@param dx number
 ---@param dy number|nil
 ---@param angle number|nil
-function Rectangle:new(x, y, dx, dy, angle)
+---@param radius number|nil
+function Rectangle:new(x, y, dx, dy, angle, radius)
   if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.Rectangle:new') end
   check.number(x, 'strike.Rectangle', 'x')
   check.number(y, 'strike.Rectangle', 'y')
@@ -25,17 +29,30 @@ function Rectangle:new(x, y, dx, dy, angle)
   angle = check.optNumber(angle, 'strike.Rectangle', 'angle', 0)
   local hx, hy = dx / 2, dy / 2
   self.dx, self.dy = dx, dy
-  Rectangle.super.new(self, x - hx, y - hy, x + hx, y - hy, x + hx, y + hy, x - hx, y + hy)
+  if radius ~= nil then
+    ConvexPolygon._checkRounding('strike.Rectangle', radius)
+    if not (radius < hx and radius < hy) then
+      check.fail(('strike.Rectangle: radius must be below half the shorter side (%s), got %s; a capsule is'
+        .. ' S.hapes.Capsule, a disc S.hapes.Circle'):format(check.describe(math.min(hx, hy)),
+        check.describe(radius)))
+    end
+    local cx, cy = hx - radius, hy - radius
+    Rectangle.super.new(self, { x - cx, y - cy, x + cx, y - cy, x + cx, y + cy, x - cx, y + cy, radius = radius })
+  else
+    Rectangle.super.new(self, x - hx, y - hy, x + hx, y - hy, x + hx, y + hy, x - hx, y + hy)
+  end
   self:_placeCentroid(x, y) -- the exact centre, free of round-off
   if angle ~= 0 then self:rotate(angle) end
 end
 
---- Arguments that rebuild the rectangle as it is now: x, y, width, height, angle.
----@return number, number, number, number, number
+--- Arguments that rebuild the rectangle as it is now: x, y, width, height, angle, and the
+--- corner radius when it is rounded.
+---@return number, number, number, number, number, number|nil
 function Rectangle:unpack()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:unpack') end
   local s = self._scale
   local x, y = self:getCentroid()
+  if self._round > 0 then return x, y, self.dx * s, self.dy * s, self._angle, self._round * s end
   return x, y, self.dx * s, self.dy * s, self._angle
 end
 
