@@ -198,13 +198,22 @@ describe('S.triking', function()
     assert.is_false(S.triking(a, T.Circle(8, 0, 3))) -- touching
   end)
 
-  it('returns the deepest MTV over all leaf pairs', function()
+  it('returns the shortest push that separates every member pair (the outline rule)', function()
     local a = T.Collider(H.Rectangle(0, 0, 10), H.Rectangle(30, 0, 10))
     local b = T.Collider(H.Rectangle(13, 0, 10), H.Rectangle(33, 0, 10))
     local m = S.triking(a, b)
-    near(m.depth, 7)
+    near(m.depth, 7) -- (one pair overlaps; pushed by 7, the other pair touches, which is free)
     assert.equals(a.shapes[2], m.colliderShape)
     assert.equals(b.shapes[2], m.collidedShape)
+    -- Two touching boxes [0, 10] x [0, 10] and [10, 20] x [0, 10]; b = [6, 14] x [3, 8]. Each
+    -- pair alone pushes b sideways by 4, into the other box; out of both, it moves down 7.
+    local two = T.Collider(H.Rectangle(5, 5, 10, 10), H.Rectangle(15, 5, 10, 10))
+    m = S.triking(two, H.Rectangle(10, 5.5, 8, 5))
+    near(m.x, 0)
+    near(m.y, 7)
+    near(m.depth, 7)
+    assert.is_false(m.separating)
+    assert.equals(0, m.edgeIndex)
   end)
 
   it('never collides members of one collider with each other', function()

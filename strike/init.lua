@@ -16,6 +16,7 @@ local pair = require(ROOT .. '.collide.kinds').pair
 local compound = require(ROOT .. '.collide.compound')
 local args = require(ROOT .. '.collide.args')
 local Shape = require(ROOT .. '.base.Shape')
+local Collider = require(ROOT .. '.colliders.Collider')
 local check = require(ROOT .. '.check')
 
 local describe, what, fail = check.describe, check.what, check.fail
@@ -87,6 +88,32 @@ end
 S.triking = compound.collide
 
 local scratch = MTV() -- S.ite's re-test of shapes that moved
+local scratchCompound = MTV() -- and of bodies with several members
+local one1, one2 = {}, {} -- (one-slot leaf lists for bare shapes)
+
+-- A body's leaves: a collider's leaf list, or a bare shape in `one`.
+local function leavesOf(body, one)
+  if body.shapes then return Collider._leafList(body) end
+  one[1] = body
+  return one, 1
+end
+
+-- S.ite for bodies with several members (compound.contacts): re-tested when either of the
+-- MTV's shapes moved since.
+local function compoundContacts(mtv, a, b, c1, l1, n1, c2, l2, n2, out)
+  local m = mtv
+  if a._pose ~= mtv._poseA or b._pose ~= mtv._poseB then
+    m = compound.collide(c1, c2, scratchCompound)
+    if not m then return nil end
+  end
+  if not (m.depth > 0) then return nil end -- luacheck: ignore 581 (NaN reads as no collision)
+  out = out or {}
+  local k = compound.contacts(m, l1, n1, l2, n2, out)
+  for i = #out, k + 1, -1 do out[i] = nil end
+  if k == 0 then return nil end
+  out.count, out.nx, out.ny = k, m.nx, m.ny
+  return out
+end
 
 -- The fields S.ite reads from an MTV it uses as it is (a setter or a hand edit may have
 -- broken them): numbers, and an edgeIndex naming a face of its shapes (or 0).
@@ -134,6 +161,18 @@ function S.ite(mtv, out)
   end
   local ops = pair[a.kind][b.kind]
   if not ops then args.noKernel('strike.ite', a.kind, b.kind) end
+  local c1, c2 = mtv.collider, mtv.collided
+  if a.kind ~= 'chain' and b.kind ~= 'chain' and (c1 ~= a or c2 ~= b) and type(c1) == 'table'
+    and type(c2) == 'table' and (isCollider(c1) or isShape(c1)) and (isCollider(c2) or isShape(c2)) then
+    -- bodies with several members between them: the outline's contacts
+    local l1, n1 = leavesOf(c1, one1)
+    local l2, n2 = leavesOf(c2, one2)
+    if n1 + n2 > 2 then
+      local count = compoundContacts(mtv, a, b, c1, l1, n1, c2, l2, n2, out)
+      one1[1], one2[1] = nil, nil
+      return count
+    end
+  end
   local m = mtv
   if a._pose ~= mtv._poseA or b._pose ~= mtv._poseB then
     m = ops.collide(a, b, scratch)

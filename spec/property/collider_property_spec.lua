@@ -36,7 +36,7 @@ describe('collider properties', function()
   -- The reference: S.AT on every leaf pair. Cases where some pair is within 1e-9 (times
   -- the coordinate scale) of touching are skipped: there S.triking's bounding-box
   -- pre-test and S.AT may legitimately round differently.
-  it('S.triking agrees with "some leaf pair collides" and returns the deepest pair; S.ettle separates it',
+  it('S.triking agrees with "some leaf pair collides", is at least the deepest pair; S.ettle separates all',
     function()
       local seed = SEED -- reported in messages; this property's own stream: SEED + 20
       local rng = PRNG.new(SEED + 20)
@@ -76,17 +76,25 @@ describe('collider properties', function()
             assert(res, ('a leaf pair collides (deepest %.17g), yet S.triking returned false: %s')
               :format(deepest, where))
             local text = ('S.triking depth %.17g, deepest pair %.17g: %s'):format(res.depth, deepest, where)
-            assert(not res.separating and abs(res.depth - deepest) <= 1e-12 * deepest, 'not the deepest: ' .. text)
+            -- (every overlapping pair must be left: the deepest one's depth is a lower bound,
+            -- reached when its own push leaves every other pair apart; the minimum itself is
+            -- checked against an independent oracle in compound_mtv_property_spec.lua)
+            assert(not res.separating and res.depth >= deepest * (1 - 1e-12), 'shorter than the deepest: ' .. text)
             assert(res.collider == c1 and res.collided == c2, 'collider/collided are not c1/c2: ' .. text)
             assert(leafOf(c1, res.colliderShape) and leafOf(c2, res.collidedShape), 'shapes are not leaves: ' .. text)
-            local again = S.AT(res.colliderShape, res.collidedShape)
-            assert(again.depth == res.depth and again.x == res.x and again.y == res.y,
-              'the MTV is not S.AT of its own shapes: ' .. text)
-            local a, b = res.colliderShape, res.collidedShape
+            if res.edgeIndex ~= 0 then -- (the deepest pair's own MTV)
+              local again = S.AT(res.colliderShape, res.collidedShape)
+              assert(again.depth == res.depth and again.x == res.x and again.y == res.y,
+                'the MTV is not S.AT of its own shapes: ' .. text)
+            end
             S.ettle(res)
-            local after = S.AT(a, b)
-            assert(after.separating or after.depth <= 1e-9 * scale,
-              ('after S.ettle the pair is still %.17g deep: %s'):format(after.depth, text))
+            for s1 in c1:elems() do
+              for s2 in c2:elems() do
+                local after = S.AT(s1, s2)
+                assert(after.separating or after.depth <= 1e-9 * scale,
+                  ('after S.ettle a pair is still %.17g deep: %s'):format(after.depth, text))
+              end
+            end
           end
         end
       end

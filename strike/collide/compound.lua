@@ -3,8 +3,12 @@
 --- reads the work needs anyway, and names S.triking in its errors), and anything else that
 --- tests whole bodies calls it too.
 ---
---- The answer is the deepest MTV over all pairs of leaves whose bounds meet, or false when
---- no pair collides; bodies under one root collider never collide. It reads a collider's
+--- The answer is the shortest translation of the second body that separates all of its
+--- members from all of the first's (the outline rule, collide/outline.lua; for one member
+--- each, their MTV), or false when no pair collides; bodies under one root collider never
+--- collide. Chain segments are one-sided surfaces, not solids: their pairs keep their own
+--- (ghost-free) MTV, and when one is deeper than the solid members' answer, it is the
+--- answer. It reads a collider's
 --- leaf list through the cache protocol of colliders/Collider.lua (`_single`: the only
 --- leaf, valid while the list is).
 local ROOT = (...):match('^(.-)%.collide%.[^%.]+$')
@@ -15,12 +19,18 @@ local layout = require(ROOT .. '.base.layout')
 local dispatch = require(ROOT .. '.collide.dispatch')
 local pair, collideOf = dispatch.pair, dispatch.collide
 local args = require(ROOT .. '.collide.args')
+local outline = require(ROOT .. '.collide.outline')
+local resolve, touches = outline.resolve, outline.touches
+local abs = math.abs
 
 local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
 local min, max = math.min, math.max
 local root, leafList = Shape._rootOf, Collider._leafList
 local badBody, badOut = args.badBody, args.badOut
 local FNAME = 'strike.triking'
+
+-- Does a leaf take part in the outline rule? Every kind but chain segments.
+local function solid(s) return s.kind ~= 'chain' end
 
 local compound = {}
 
@@ -82,15 +92,18 @@ function compound.collide(body1, body2, out)
   local l1, n1, l2, n2
   if s1 == body1 then l1, n1 = one1, 1; one1[1] = body1 else l1, n1 = leafList(body1) end
   if s2 == body2 then l2, n2 = one2, 1; one2[1] = body2 else l2, n2 = leafList(body2) end
-  -- Test into `tmp`; a deeper result becomes `best` and the other buffer becomes `tmp`.
-  -- With an `out` table it is one of the two buffers, so the usual single hit needs no copy.
-  local best, tmp, found = tmpA, out or tmpB, false
+  -- The solid pairs first (chain segments are surfaces, not solids: they keep their own
+  -- per-segment answer, below). Test into `tmp`; a deeper result becomes `best` and the
+  -- other buffer becomes `tmp`. With an `out` table it is one of the two buffers, so the
+  -- usual single hit needs no copy.
+  local best, tmp, found, chains = tmpA, out or tmpB, 0, false
   local bestDepth = 0
   for i = 1, n1 do
     local a = l1[i]
     if a._dirty then a:_refresh() end
     local ax0, ay0, ax1, ay1 = a[MINX], a[MINY], a[MAXX], a[MAXY]
     local row = collideOf[a.kind]
+    local chainA = a.kind == 'chain'
     for j = 1, n2 do
       local b = l2[j]
       if b._dirty then b:_refresh() end
@@ -98,20 +111,108 @@ function compound.collide(body1, body2, out)
       -- the narrow phase decides touching), as two tests instead of four: fewer trace
       -- exits under LuaJIT.
       if min(ax1, b[MAXX]) >= max(ax0, b[MINX]) and min(ay1, b[MAXY]) >= max(ay0, b[MINY]) then
-        local collide = row[b.kind]
-        if not collide then args.noKernel(FNAME, a.kind, b.kind) end
-        collide(a, b, tmp)
-        local d = tmp.depth
-        if d > bestDepth then -- (false for NaN and for separating results)
-          best, tmp, found, bestDepth = tmp, best, true, d
+        if chainA or b.kind == 'chain' then
+          chains = true
+        else
+          local collide = row[b.kind]
+          if not collide then args.noKernel(FNAME, a.kind, b.kind) end
+          collide(a, b, tmp)
+          local d = tmp.depth
+          if d > 0 then -- (false for NaN and for separating results)
+            found = found + 1
+            if d > bestDepth then best, tmp, bestDepth = tmp, best, d end
+          end
+        end
+      end
+    end
+  end
+  -- Several members: the shortest push out of them all (outline.lua), unless the deepest
+  -- pair's own is that already.
+  if found > 0 and n1 + n2 > 2 then
+    resolve(best, l1, n1, l2, n2, solid)
+    bestDepth = best.depth
+  end
+  if chains then -- the chain segments' pairs: the deepest, when deeper than the solids'
+    for i = 1, n1 do
+      local a = l1[i]
+      local ax0, ay0, ax1, ay1 = a[MINX], a[MINY], a[MAXX], a[MAXY]
+      local row = collideOf[a.kind]
+      local chainA = a.kind == 'chain'
+      for j = 1, n2 do
+        local b = l2[j]
+        if (chainA or b.kind == 'chain')
+          and min(ax1, b[MAXX]) >= max(ax0, b[MINX]) and min(ay1, b[MAXY]) >= max(ay0, b[MINY]) then
+          local collide = row[b.kind]
+          if not collide then args.noKernel(FNAME, a.kind, b.kind) end
+          collide(a, b, tmp)
+          local d = tmp.depth
+          if d > bestDepth then best, tmp, bestDepth, found = tmp, best, d, found + 1 end
         end
       end
     end
   end
   one1[1], one2[1] = nil, nil -- (bare shapes are not kept alive by strike)
-  if not found then return false end
+  if found == 0 then return false end
   if best ~= out then out = MTV._set(out or MTV(), best) end
   return stamp(out, r1, r2)
+end
+
+-- Scratch: one pair's contact points.
+local pairOut = {}
+
+--- The contact points of a compound MTV (bodies with more than one leaf between them, and
+--- an answer from solid members; see S.ite): every solid member pair that touches once
+--- the second body has moved by the MTV gives its points (at most 2, from the pair's
+--- contact kernel with the MTV's normal and the pair's own overlap along it), in leaf
+--- order; each point names its members (colliderShape, collidedShape). Fills `out` from
+--- index 1 and returns the count (0: none).
+---@param m table the MTV (x, y, nx, ny)
+---@param l1 strike.Shape[]
+---@param n1 integer
+---@param l2 strike.Shape[]
+---@param n2 integer
+---@param out table
+---@return integer count
+function compound.contacts(m, l1, n1, l2, n2, out)
+  local tx, ty, nx, ny = m.x, m.y, m.nx, m.ny
+  local scale = abs(tx) + abs(ty)
+  for i = 1, n1 do
+    local a = l1[i]
+    if a._dirty then a:_refresh() end
+    scale = scale + (a[MAXX] - a[MINX]) + (a[MAXY] - a[MINY]) + abs(a[MINX]) + abs(a[MINY])
+  end
+  for j = 1, n2 do
+    local b = l2[j]
+    if b._dirty then b:_refresh() end
+    scale = scale + (b[MAXX] - b[MINX]) + (b[MAXY] - b[MINY]) + abs(b[MINX]) + abs(b[MINY])
+  end
+  scale = scale / (n1 + n2)
+  local count = 0
+  for i = 1, n1 do
+    local a = l1[i]
+    if solid(a) then
+      for j = 1, n2 do
+        local b = l2[j]
+        if solid(b) then
+          local touching, depth = touches(a, b, tx, ty, nx, ny, scale)
+          if touching and depth > 0 then
+            local k = pair[a.kind][b.kind].contact(a, b, nx, ny, depth, 0, pairOut)
+            for q = 1, k do
+              local p, src = out[count + 1], pairOut[q]
+              if not p then
+                p = { x = 0, y = 0, depth = 0, id = 0, colliderShape = false, collidedShape = false }
+              end
+              p.x, p.y, p.depth, p.id = src.x, src.y, src.depth, src.id
+              p.colliderShape, p.collidedShape = a, b
+              count = count + 1
+              out[count] = p
+            end
+          end
+        end
+      end
+    end
+  end
+  return count
 end
 
 return compound

@@ -1,0 +1,488 @@
+--- The outline rule: the MTV between two compound bodies is the shortest translation of
+--- the second that separates all of its members from all of the first's, not the deepest
+--- member pair's (which can point through a seam between members, into a neighbour).
+---
+--- Members a (of the first body) and b (of the second) overlap after b moves by t exactly
+--- when t is inside M = a - b, their Minkowski difference: the difference of their cores
+--- (polygon, segment or point) grown by the sum of their radii (collide/rounded.lua). The
+--- answer is the point nearest the origin outside the union F of those differences. That
+--- point lies on the boundary of F, which is made of pieces of the differences' features
+--- (their faces moved out by the radius, and circles about their vertices); restricted to
+--- one feature, the nearest point of a free stretch is the feature's own nearest point,
+--- one of its ends, or a point where another difference's boundary crosses it. So the
+--- answer is the nearest free point among: each feature's nearest point and ends, and
+--- every crossing of two features of different differences (the candidate set of exact
+--- penetration-depth computations for unions of convex sets; see e.g. Y. J. Kim, M. C.
+--- Lin, D. Manocha, "Fast penetration depth computation using rasterization hardware and
+--- hierarchical refinement", 2002, on the boundary of the Minkowski sum of a union).
+---
+--- Free means: not inside any difference (by more than round-off), and not on a seam: a
+--- candidate on one difference's boundary is moved a hair outward (along the feature's
+--- normal, or between both normals at a crossing), and if that lands inside the difference
+--- of a member that has seams (the pieces of a Concave outline, whose shared edges are not
+--- surfaces), the candidate is inside the outline, not on it. (Members without seams that
+--- merely touch are separate solids: a body squeezed exactly between them touches both and
+--- overlaps neither, which is free. That only matters for bodies with no thickness across
+--- the touching faces, such as points.)
+---
+--- Cost. The deepest pair's own MTV is tried first: its length is a lower bound (every
+--- overlapping pair must be left), so when it is free it is the answer (the usual case: a
+--- body on a flat floor of tiles, or in one piece of an outline). Only pairs whose bounds
+--- are nearer than an answer already known (at worst, lifting the second body's bounds
+--- clear of the first's) take part. Everything lives in module-level scratch arrays:
+--- nothing is allocated per call once they have grown.
+local ROOT = (...):match('^(.-)%.collide%.[^%.]+$')
+local layout = require(ROOT .. '.base.layout')
+
+local sqrt, huge, abs = math.sqrt, math.huge, math.abs
+local X, Y, R = layout.X, layout.Y, layout.R
+local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
+local STRIDE, VY, NX, NY, BASE = layout.STRIDE, layout.VY, layout.NX, layout.NY, layout.BASE
+
+local outline = {}
+
+--- Relative tolerance: a candidate inside a difference by less than TOL times the scene's
+--- size counts as free (round-off).
+outline.TOL = 1e-11
+--- The outward step of the seam test, relative to the scene's size.
+outline.NUDGE = 1e-9
+
+-- The differences: difference m has core vertices first[m] .. first[m] + count[m] - 1 in
+-- vx, vy (positive winding), with the outward normal (nx, ny) and offset d of the edge from
+-- each vertex to the next; radius rad[m]; the members memberA[m], memberB[m].
+local first, count, rad, memberA, memberB = {}, {}, {}, {}, {}
+local vx, vy, enx, eny, ed = {}, {}, {}, {}, {}
+local nDiff, nVert = 0, 0
+
+-- A member's core, as the merge below reads it: its vertex count (a circle's is its centre,
+-- 1; a capsule of zero length, whose two vertices coincide, is one point too), a vertex,
+-- and the outward normal of the edge from vertex i to the next.
+local function coreCount(s)
+  local n = s._n
+  if not n then return 1 end
+  if n == 2 and s[STRIDE + BASE] == s[2 * STRIDE + BASE] and s[STRIDE + BASE + VY] == s[2 * STRIDE + BASE + VY] then
+    return 1
+  end
+  return n
+end
+local function coreVertex(s, i)
+  if s._n then
+    local k = STRIDE * i + BASE
+    return s[k], s[k + VY]
+  end
+  return s[X], s[Y]
+end
+
+-- The index of the lowest vertex (least y, then least x) of a core of n vertices, read
+-- through coreVertex with the sign `sign` (-1: the core turned half round, as -b is).
+local function lowest(s, n, sign)
+  local bi, bx, by = 1, huge, huge
+  for i = 1, n do
+    local x, y = coreVertex(s, i)
+    x, y = sign * x, sign * y
+    if y < by or (y == by and x < bx) then bi, bx, by = i, x, y end
+  end
+  return bi
+end
+
+-- Add the difference of members a and b (refreshed): the Minkowski sum of a's core and b's
+-- turned half round, by merging their edges in the order of their directions from each
+-- one's lowest vertex (the classic O(n + m) merge of convex polygons, e.g. M. de Berg et
+-- al., Computational Geometry, 3rd ed., 13.3). Each edge of the sum is an edge of one of
+-- them and keeps that shape's own unit normal (a's, or b's negated), never one computed
+-- from a short difference of nearby points.
+local function addDifference(a, b)
+  local na, nb = coreCount(a), coreCount(b)
+  local ia, ib = lowest(a, na, 1), lowest(b, nb, -1)
+  nDiff = nDiff + 1
+  local m = nDiff
+  first[m], rad[m], memberA[m], memberB[m] = nVert + 1, a[R] + b[R], a, b
+  local ea, eb = na > 1 and na or 0, nb > 1 and nb or 0 -- (edges: a point has none)
+  local i, j = 0, 0
+  repeat
+    local pa = (ia + i - 1) % na + 1
+    local pb = (ib + j - 1) % nb + 1
+    local ax, ay = coreVertex(a, pa)
+    local bx, by = coreVertex(b, pb)
+    nVert = nVert + 1
+    vx[nVert], vy[nVert] = ax - bx, ay - by
+    -- the next edge: a's edge pa, b's (turned) edge pb, or both when parallel
+    local takeA
+    if i >= ea then
+      takeA = false
+    elseif j >= eb then
+      takeA = true
+    else
+      local qa = pa % na + 1
+      local qb = pb % nb + 1
+      local ux, uy = coreVertex(a, qa)
+      local wx, wy = coreVertex(b, qb)
+      ux, uy = ux - ax, uy - ay
+      wx, wy = bx - wx, by - wy -- (b's edge turned half round)
+      local c = ux * wy - uy * wx
+      if c > 0 then takeA = true elseif c < 0 then takeA = false else takeA = 'both' end
+    end
+    local nx, ny
+    if takeA then
+      local k = STRIDE * pa + BASE
+      nx, ny = a[k + NX], a[k + NY]
+      i = i + 1
+      if takeA == 'both' then j = j + 1 end
+    elseif j < eb then
+      local k = STRIDE * pb + BASE
+      nx, ny = -b[k + NX], -b[k + NY]
+      j = j + 1
+    else
+      nx, ny = 0, 0 -- (two points: no edge)
+    end
+    enx[nVert], eny[nVert] = nx, ny
+    ed[nVert] = nx * vx[nVert] + ny * vy[nVert]
+  until i >= ea and j >= eb
+  count[m] = nVert - first[m] + 1
+end
+
+-- Signed distance from (x, y) to the core of difference m: negative inside a polygon.
+local function coreDistance(m, x, y)
+  local f, h = first[m], count[m]
+  if h >= 3 then
+    local s = -huge
+    for k = f, f + h - 1 do
+      local d = enx[k] * x + eny[k] * y - ed[k]
+      if d > s then s = d end
+    end
+    if s <= 0 then return s end
+  end
+  local best = huge
+  for k = f, f + h - 1 do
+    local l = k < f + h - 1 and k + 1 or f
+    local x1, y1 = vx[k], vy[k]
+    local ex, ey = vx[l] - x1, vy[l] - y1
+    local dx, dy = x - x1, y - y1
+    local t = dx * ex + dy * ey
+    if t > 0 then
+      local e2 = ex * ex + ey * ey
+      if t >= e2 then
+        dx, dy = x - vx[l], y - vy[l]
+      else
+        t = t / e2
+        dx, dy = dx - t * ex, dy - t * ey
+      end
+    end
+    local d2 = dx * dx + dy * dy
+    if d2 < best then best = d2 end
+  end
+  return sqrt(best)
+end
+
+-- Is (x, y) inside some difference by more than tol, skipping difference `skip`?
+local function covered(x, y, tol, skip)
+  for m = 1, nDiff do
+    if m ~= skip and coreDistance(m, x, y) < rad[m] - tol then return true end
+  end
+  return false
+end
+
+-- The same, over the differences with a member that has seams (faces that are not
+-- surfaces: the pieces of a Concave outline, strike/colliders/Concave.lua).
+local function coveredAcrossSeams(x, y, tol, skip)
+  for m = 1, nDiff do
+    if m ~= skip and (memberA[m]._seams or memberB[m]._seams) and coreDistance(m, x, y) < rad[m] - tol then
+      return true
+    end
+  end
+  return false
+end
+
+-- The best free candidate so far: its squared length, the point, its difference.
+local bestD2, bestX, bestY, bestM = huge, 0, 0, 0
+local tolerance, nudge = 0, 0
+
+-- Consider (x, y), on the boundary of difference m with outward unit direction (ux, uy).
+local function consider(x, y, m, ux, uy)
+  local d2 = x * x + y * y
+  if not (d2 < bestD2) then return end -- luacheck: ignore 581 (NaN is never better)
+  if covered(x, y, tolerance, 0) then return end
+  if coveredAcrossSeams(x + ux * nudge, y + uy * nudge, tolerance, m) then return end
+  bestD2, bestX, bestY, bestM = d2, x, y, m
+end
+
+-- Features: 1 = a face moved out (x1, y1, x2, y2, outward normal), 2 = a circle about a
+-- vertex (cx, cy, r). Their nearest distance to the origin, for pruning.
+local fType, fM, fA, fB, fC, fD, fNX, fNY, fDist = {}, {}, {}, {}, {}, {}, {}, {}, {}
+local nFeat = 0
+
+local function addFeatures(m)
+  local f, h, r = first[m], count[m], rad[m]
+  if h >= 2 then
+    for k = f, f + h - 1 do
+      local l = k < f + h - 1 and k + 1 or f
+      local nx, ny = enx[k], eny[k]
+      if nx ~= 0 or ny ~= 0 then
+        nFeat = nFeat + 1
+        local i = nFeat
+        local x1, y1, x2, y2 = vx[k] + nx * r, vy[k] + ny * r, vx[l] + nx * r, vy[l] + ny * r
+        fType[i], fM[i], fA[i], fB[i], fC[i], fD[i], fNX[i], fNY[i] = 1, m, x1, y1, x2, y2, nx, ny
+        -- its nearest point to the origin, and its ends
+        local ex, ey = x2 - x1, y2 - y1
+        local t = -(x1 * ex + y1 * ey)
+        local e2 = ex * ex + ey * ey
+        local qx, qy = x1, y1
+        if t >= e2 then qx, qy = x2, y2 elseif t > 0 then qx, qy = x1 + ex * t / e2, y1 + ey * t / e2 end
+        fDist[i] = sqrt(qx * qx + qy * qy)
+        consider(qx, qy, m, nx, ny)
+        consider(x1, y1, m, nx, ny)
+        consider(x2, y2, m, nx, ny)
+      end
+    end
+  end
+  if r > 0 then
+    for k = f, f + h - 1 do
+      nFeat = nFeat + 1
+      local i = nFeat
+      local cx, cy = vx[k], vy[k]
+      fType[i], fM[i], fA[i], fB[i], fC[i] = 2, m, cx, cy, r
+      local c = sqrt(cx * cx + cy * cy)
+      fDist[i] = abs(c - r)
+      local ux, uy = 0, -1 -- (a circle about the origin: every point is as near; pick -y)
+      if c > 0 then ux, uy = -cx / c, -cy / c end
+      consider(cx + ux * r, cy + uy * r, m, ux, uy)
+    end
+  end
+  -- (a difference of two points has no inside: it covers nothing and has no features)
+end
+
+-- The outward direction of feature i at (x, y) (on it).
+local function normalAt(i, x, y)
+  if fType[i] == 1 then return fNX[i], fNY[i] end
+  local dx, dy = x - fA[i], y - fB[i]
+  local l = sqrt(dx * dx + dy * dy)
+  if l > 0 then return dx / l, dy / l end
+  return 0, 0
+end
+
+-- Consider a crossing (x, y) of features i and j: moved out between both normals.
+local function crossing(i, j, x, y)
+  if not (x * x + y * y < bestD2) then return end -- luacheck: ignore 581 (NaN is never better)
+  local ax, ay = normalAt(i, x, y)
+  local bx, by = normalAt(j, x, y)
+  local ux, uy = ax + bx, ay + by
+  local l = sqrt(ux * ux + uy * uy)
+  if l > 0 then ux, uy = ux / l, uy / l end
+  local d2 = x * x + y * y
+  if covered(x, y, tolerance, 0) then return end
+  -- (moved out, it must be clear of every difference, its own two included)
+  if l > 0 and coveredAcrossSeams(x + ux * nudge, y + uy * nudge, tolerance, 0) then return end
+  bestD2, bestX, bestY, bestM = d2, x, y, fM[i]
+end
+
+-- The crossings of features i and j (of different differences).
+local function cross(i, j)
+  local ti, tj = fType[i], fType[j]
+  if ti == 2 and tj == 1 then i, j, ti, tj = j, i, tj, ti end
+  if ti == 1 and tj == 1 then
+    local x1, y1, ex, ey = fA[i], fB[i], fC[i] - fA[i], fD[i] - fB[i]
+    local x3, y3, gx, gy = fA[j], fB[j], fC[j] - fA[j], fD[j] - fB[j]
+    local den = ex * gy - ey * gx
+    if den == 0 then return end
+    local wx, wy = x3 - x1, y3 - y1
+    local s = (wx * gy - wy * gx) / den
+    local t = (wx * ey - wy * ex) / den
+    if s >= 0 and s <= 1 and t >= 0 and t <= 1 then crossing(i, j, x1 + s * ex, y1 + s * ey) end
+  elseif ti == 1 then -- a face and a circle
+    local x1, y1, ex, ey = fA[i], fB[i], fC[i] - fA[i], fD[i] - fB[i]
+    local cx, cy, r = fA[j], fB[j], fC[j]
+    local e2 = ex * ex + ey * ey
+    local mx, my = x1 - cx, y1 - cy
+    local b = (mx * ex + my * ey) / e2
+    local qx, qy = mx - b * ex, my - b * ey -- (the circle's centre to the line's nearest point)
+    local disc = (r * r - (qx * qx + qy * qy)) / e2
+    if disc < 0 then return end
+    local root = sqrt(disc)
+    for k = -1, 1, 2 do
+      local s = -b + k * root
+      if s >= 0 and s <= 1 then crossing(i, j, x1 + s * ex, y1 + s * ey) end
+    end
+  else -- two circles
+    local ax, ay, ra = fA[i], fB[i], fC[i]
+    local bx, by, rb = fA[j], fB[j], fC[j]
+    local dx, dy = bx - ax, by - ay
+    local d2 = dx * dx + dy * dy
+    if d2 == 0 then return end
+    local d = sqrt(d2)
+    local a = (ra * ra - rb * rb + d2) / (2 * d)
+    local h2 = ra * ra - a * a
+    if h2 < 0 then return end
+    local h = sqrt(h2)
+    local mx, my = ax + dx * a / d, ay + dy * a / d
+    crossing(i, j, mx - dy * h / d, my + dx * h / d)
+    crossing(i, j, mx + dy * h / d, my - dx * h / d)
+  end
+end
+
+-- Scratch for the pruned feature list.
+local near = {}
+
+--- Apply the outline rule to the solid member pairs of the leaf lists l1 (n1 leaves) and l2
+--- (n2), given `best`, the deepest pair's MTV (filled by a narrow phase), which is kept
+--- when it is free (see the header) and otherwise overwritten with the answer (edgeIndex 0;
+--- colliderShape and collidedShape: the members whose difference gave it). Chain segments
+--- take no part (the caller leaves them out: `solid(s)` says whether a leaf takes part).
+--- Returns `best`.
+---@param best table an MTV-shaped table
+---@param l1 strike.Shape[]
+---@param n1 integer
+---@param l2 strike.Shape[]
+---@param n2 integer
+---@param solid fun(s: strike.Shape): boolean
+---@return table best
+function outline.resolve(best, l1, n1, l2, n2, solid)
+  -- The scale of round-off: the deepest pair's size and distance from the origin.
+  local sa, sb = best.colliderShape, best.collidedShape
+  local scale = (sa[MAXX] - sa[MINX]) + (sa[MAXY] - sa[MINY]) + (sb[MAXX] - sb[MINX]) + (sb[MAXY] - sb[MINY])
+    + abs(sa[X]) + abs(sa[Y]) + abs(sb[X]) + abs(sb[Y])
+  tolerance, nudge = outline.TOL * scale, outline.NUDGE * scale
+  -- The deepest pair's MTV, when it is free, is the answer (its length is a lower bound);
+  -- a hair further along it must be free too (else it stops on a seam). Only the pairs
+  -- whose bounds meet once the second body has moved by it can cover it.
+  local tx, ty = best.x, best.y
+  local ux, uy = tx + best.nx * nudge, ty + best.ny * nudge
+  nDiff, nVert = 0, 0
+  for i = 1, n1 do
+    local a = l1[i]
+    if solid(a) then
+      -- (b's bounds, moved by t or by u, must reach past a's near sides by more than the
+      -- tolerance: otherwise the two overlap by less than that once b has moved)
+      local x0, y0, x1, y1 = a[MINX] + tolerance, a[MINY] + tolerance, a[MAXX] - tolerance, a[MAXY] - tolerance
+      for j = 1, n2 do
+        local b = l2[j]
+        local bx0, by0, bx1, by1 = b[MINX], b[MINY], b[MAXX], b[MAXY]
+        if ((x1 > bx0 + tx and bx1 + tx > x0 and y1 > by0 + ty and by1 + ty > y0)
+            or (x1 > bx0 + ux and bx1 + ux > x0 and y1 > by0 + uy and by1 + uy > y0)) and solid(b) then
+          addDifference(a, b)
+        end
+      end
+    end
+  end
+  if not covered(tx, ty, tolerance, 0) and not coveredAcrossSeams(ux, uy, tolerance, 0) then
+    for m = 1, nDiff do memberA[m], memberB[m] = false, false end -- (strike keeps no shape alive)
+    return best
+  end
+  -- An answer known free: lift the second body's bounds clear of the first's.
+  local ax0, ay0, ax1, ay1 = huge, huge, -huge, -huge
+  local bx0, by0, bx1, by1 = huge, huge, -huge, -huge
+  for i = 1, n1 do
+    local s = l1[i]
+    if solid(s) then
+      if s[MINX] < ax0 then ax0 = s[MINX] end
+      if s[MINY] < ay0 then ay0 = s[MINY] end
+      if s[MAXX] > ax1 then ax1 = s[MAXX] end
+      if s[MAXY] > ay1 then ay1 = s[MAXY] end
+    end
+  end
+  for j = 1, n2 do
+    local s = l2[j]
+    if solid(s) then
+      if s[MINX] < bx0 then bx0 = s[MINX] end
+      if s[MINY] < by0 then by0 = s[MINY] end
+      if s[MAXX] > bx1 then bx1 = s[MAXX] end
+      if s[MAXY] > by1 then by1 = s[MAXY] end
+    end
+  end
+  local fx, fy = ax1 - bx0, 0
+  if bx1 - ax0 < abs(fx) then fx = -(bx1 - ax0) end
+  if ay1 - by0 < abs(fx) + abs(fy) then fx, fy = 0, ay1 - by0 end
+  if by1 - ay0 < abs(fx) + abs(fy) then fx, fy = 0, -(by1 - ay0) end
+  local reach = abs(fx) + abs(fy)
+  -- The differences of the pairs that can matter: bounds nearer than `reach`.
+  nDiff, nVert = 0, 0
+  for i = 1, n1 do
+    local a = l1[i]
+    if solid(a) then
+      for j = 1, n2 do
+        local b = l2[j]
+        if solid(b) and a[MINX] - b[MAXX] < reach and b[MINX] - a[MAXX] < reach
+          and a[MINY] - b[MAXY] < reach and b[MINY] - a[MAXY] < reach then
+          addDifference(a, b)
+        end
+      end
+    end
+  end
+  -- Otherwise the nearest free candidate, starting from the lift (free by construction).
+  bestD2, bestX, bestY, bestM = fx * fx + fy * fy, fx, fy, 0
+  nFeat = 0
+  for m = 1, nDiff do addFeatures(m) end
+  local k = 0
+  for i = 1, nFeat do
+    if fDist[i] * fDist[i] < bestD2 then
+      k = k + 1
+      near[k] = i
+    end
+  end
+  for p = 1, k do
+    local i = near[p]
+    for q = p + 1, k do
+      local j = near[q]
+      local limit = sqrt(bestD2)
+      if fM[i] ~= fM[j] and fDist[i] < limit and fDist[j] < limit then cross(i, j) end
+    end
+  end
+  local d = sqrt(bestD2)
+  local nx, ny = 0, -1
+  if d > 0 then nx, ny = bestX / d, bestY / d end
+  best.x, best.y, best.nx, best.ny, best.depth = bestX, bestY, nx, ny, d
+  best.separating = false
+  best.edgeIndex = 0
+  if bestM > 0 then
+    best.colliderShape, best.collidedShape = memberA[bestM], memberB[bestM]
+  end
+  for m = 1, nDiff do memberA[m], memberB[m] = false, false end -- (strike keeps no shape alive)
+  return best
+end
+
+-- The extent of a member's projection on the unit vector (nx, ny), radius included.
+local function extent(s, nx, ny)
+  local r = s[R]
+  if not s._n then
+    local d = s[X] * nx + s[Y] * ny
+    return d - r, d + r
+  end
+  local lo, hi = huge, -huge
+  for i = 1, s._n do
+    local k = STRIDE * i + BASE
+    local d = s[k] * nx + s[k + VY] * ny
+    if d < lo then lo = d end
+    if d > hi then hi = d end
+  end
+  return lo - r, hi + r
+end
+
+--- Do members a and b (solid, refreshed) touch once b has moved by (tx, ty) (the boundary
+--- of their difference passes through it, within the tolerance of outline.resolve for the
+--- scene size `scale`)? When they do, also returns how deep they overlap along the unit
+--- vector (nx, ny) before the move.
+---@param a strike.Shape
+---@param b strike.Shape
+---@param tx number
+---@param ty number
+---@param nx number
+---@param ny number
+---@param scale number
+---@return boolean touching
+---@return number depth
+function outline.touches(a, b, tx, ty, nx, ny, scale)
+  local tol = 1e3 * outline.TOL * scale -- (the push was computed with round-off of its own)
+  if not (a[MAXX] - b[MINX] - tx >= -tol and b[MAXX] + tx - a[MINX] >= -tol
+      and a[MAXY] - b[MINY] - ty >= -tol and b[MAXY] + ty - a[MINY] >= -tol) then
+    return false, 0
+  end
+  nDiff, nVert = 0, 0
+  addDifference(a, b)
+  local gap = coreDistance(1, tx, ty) - rad[1]
+  memberA[1], memberB[1] = false, false
+  if gap > tol or gap < -tol then return false, 0 end
+  local _, hiA = extent(a, nx, ny)
+  local loB = extent(b, nx, ny)
+  return true, hiA - loB
+end
+
+return outline
