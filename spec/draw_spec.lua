@@ -23,6 +23,7 @@ local function fakeLove()
   end
   return { graphics = {
     polygon = record('polygon'), line = record('line'), circle = record('circle'), points = record('points'),
+    arc = record('arc'),
     getColor = function() return colour[1], colour[2], colour[3], colour[4] end,
     setColor = function(r, g, b, a) colour = { r, g, b, a } end,
   } }
@@ -49,6 +50,23 @@ describe('drawing', function()
     assert.same({ 'circle', 'fill', 1, 2, 3 }, calls[2])
     assert.same({ 'line', 0, 0, 4, 0 }, calls[3])
     assert.same({ 'points', 5, 6 }, calls[4])
+  end)
+
+  it('draws a rounded shape with arcs about its core corners and its faces moved out', function()
+    H.Rectangle(0, 0, 10, 10, 0, 2):draw('line')
+    assert.same({ 'arc', 'line', 'arc', 'line', 'arc', 'line', 'arc', 'line' }, names())
+    -- corner 1 (-3, -3): from the -x face's normal (angle pi) a quarter turn to -y's (3 pi / 2)
+    local a = calls[1]
+    assert.same({ 'arc', 'line', 'open', -3, -3, 2 }, { a[1], a[2], a[3], a[4], a[5], a[6] })
+    expect.near(a[7], math.pi)
+    expect.near(a[8], 1.5 * math.pi)
+    expect.nearList({ calls[2][2], calls[2][3], calls[2][4], calls[2][5] }, { -3, -5, 3, -5 })
+    H.Capsule(0, 0, 4, 10):draw('fill')
+    local fill = {}
+    for i = 9, #calls do fill[#fill + 1] = calls[i][1] end
+    assert.same({ 'arc', 'polygon', 'arc', 'polygon' }, fill) -- (two half discs, two strips)
+    assert.equals('pie', calls[9][3])
+    expect.near(calls[9][8] - calls[9][7], math.pi)
   end)
 
   it('draws every shape of a collider, nested ones too', function()
