@@ -355,7 +355,7 @@ function Shape:copy(x, y, angle)
   local c = setmetatable({}, getmetatable(self))
   for k = 1, #self do c[k] = self[k] end -- (the array part first, so it stays an array)
   for k, v in pairs(self) do
-    if c[k] == nil and k ~= 'parent' then c[k] = v end
+    if rawget(c, k) == nil and k ~= 'parent' then c[k] = v end -- (rawget: an own field may shadow the class's)
   end
   -- (local geometry is never changed after construction, so copies share it)
   c._dirty = true
