@@ -191,5 +191,14 @@ describe('rounded collisions', function()
       near(m.nx, 0, 1e-12, 'x = ' .. x)
       near(m.y, -0.5, 1e-12, 'x = ' .. x)
     end
+    -- The second segment of a flat chain against a rounded box 0.1 deep whose corner arc
+    -- reaches past the segment's start (10, 0): the nearest points give a slanted normal,
+    -- which the segment may not push along; it pushes along its own normal by how far the
+    -- box reaches behind its line, radius included: 0.1.
+    local seg2 = ground.shapes[2]
+    local box = H.Rectangle(9.3, -0.9, 2, 2, 0, 0.5) -- core x [8.8, 9.8], y [-1.4, -0.4]
+    local m = S.AT(seg2, box)
+    nearList({ m.nx, m.ny, m.depth }, { 0, -1, 0.1 }, 1e-12)
+    assert.equals(1, m.edgeIndex)
   end)
 end)
