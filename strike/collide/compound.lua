@@ -129,7 +129,7 @@ function compound.collide(body1, body2, out)
   -- Several members: the shortest push out of them all (outline.lua), unless the deepest
   -- pair's own is that already.
   if found > 0 and n1 + n2 > 2 then
-    resolve(best, l1, n1, l2, n2, solid)
+    resolve(best, l1, n1, l2, n2)
     bestDepth = best.depth
   end
   if chains then -- the chain segments' pairs: the deepest, when deeper than the solids'

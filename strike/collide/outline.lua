@@ -326,16 +326,14 @@ local near = {}
 --- (n2), given `best`, the deepest pair's MTV (filled by a narrow phase), which is kept
 --- when it is free (see the header) and otherwise overwritten with the answer (edgeIndex 0;
 --- colliderShape and collidedShape: the members whose difference gave it). Chain segments
---- take no part (the caller leaves them out: `solid(s)` says whether a leaf takes part).
---- Returns `best`.
+--- (kind 'chain') take no part: they are surfaces, not solids. Returns `best`.
 ---@param best table an MTV-shaped table
 ---@param l1 strike.Shape[]
 ---@param n1 integer
 ---@param l2 strike.Shape[]
 ---@param n2 integer
----@param solid fun(s: strike.Shape): boolean
 ---@return table best
-function outline.resolve(best, l1, n1, l2, n2, solid)
+function outline.resolve(best, l1, n1, l2, n2)
   -- The scale of round-off: the deepest pair's size and distance from the origin.
   local sa, sb = best.colliderShape, best.collidedShape
   local scale = (sa[MAXX] - sa[MINX]) + (sa[MAXY] - sa[MINY]) + (sb[MAXX] - sb[MINX]) + (sb[MAXY] - sb[MINY])
@@ -349,7 +347,7 @@ function outline.resolve(best, l1, n1, l2, n2, solid)
   nDiff, nVert = 0, 0
   for i = 1, n1 do
     local a = l1[i]
-    if solid(a) then
+    if a.kind ~= 'chain' then
       -- (b's bounds, moved by t or by u, must reach past a's near sides by more than the
       -- tolerance: otherwise the two overlap by less than that once b has moved)
       local x0, y0, x1, y1 = a[MINX] + tolerance, a[MINY] + tolerance, a[MAXX] - tolerance, a[MAXY] - tolerance
@@ -357,7 +355,7 @@ function outline.resolve(best, l1, n1, l2, n2, solid)
         local b = l2[j]
         local bx0, by0, bx1, by1 = b[MINX], b[MINY], b[MAXX], b[MAXY]
         if ((x1 > bx0 + tx and bx1 + tx > x0 and y1 > by0 + ty and by1 + ty > y0)
-            or (x1 > bx0 + ux and bx1 + ux > x0 and y1 > by0 + uy and by1 + uy > y0)) and solid(b) then
+            or (x1 > bx0 + ux and bx1 + ux > x0 and y1 > by0 + uy and by1 + uy > y0)) and b.kind ~= 'chain' then
           addDifference(a, b)
         end
       end
@@ -372,7 +370,7 @@ function outline.resolve(best, l1, n1, l2, n2, solid)
   local bx0, by0, bx1, by1 = huge, huge, -huge, -huge
   for i = 1, n1 do
     local s = l1[i]
-    if solid(s) then
+    if s.kind ~= 'chain' then
       if s[MINX] < ax0 then ax0 = s[MINX] end
       if s[MINY] < ay0 then ay0 = s[MINY] end
       if s[MAXX] > ax1 then ax1 = s[MAXX] end
@@ -381,7 +379,7 @@ function outline.resolve(best, l1, n1, l2, n2, solid)
   end
   for j = 1, n2 do
     local s = l2[j]
-    if solid(s) then
+    if s.kind ~= 'chain' then
       if s[MINX] < bx0 then bx0 = s[MINX] end
       if s[MINY] < by0 then by0 = s[MINY] end
       if s[MAXX] > bx1 then bx1 = s[MAXX] end
@@ -397,10 +395,10 @@ function outline.resolve(best, l1, n1, l2, n2, solid)
   nDiff, nVert = 0, 0
   for i = 1, n1 do
     local a = l1[i]
-    if solid(a) then
+    if a.kind ~= 'chain' then
       for j = 1, n2 do
         local b = l2[j]
-        if solid(b) and a[MINX] - b[MAXX] < reach and b[MINX] - a[MAXX] < reach
+        if b.kind ~= 'chain' and a[MINX] - b[MAXX] < reach and b[MINX] - a[MAXX] < reach
           and a[MINY] - b[MAXY] < reach and b[MINY] - a[MAXY] < reach then
           addDifference(a, b)
         end
