@@ -9,7 +9,7 @@ package.path = './?.lua;./?/init.lua;' .. package.path
 local S = require('strike')
 local H, T = S.hapes, S.trikers
 local clock = os.clock
-local unpack = table.unpack or unpack -- luacheck: ignore 143
+local unpack = table.unpack or unpack -- luacheck: ignore 113 143
 
 local seconds = tonumber(arg and arg[1]) or 1
 

@@ -9,7 +9,7 @@ local H, T = S.hapes, S.trikers
 local function floor(n)
   local tiles = {}
   for i = 0, n - 1 do tiles[#tiles + 1] = H.Rectangle(16 + 32 * i, 16, 32, 32) end
-  return T.Collider((table.unpack or unpack)(tiles)), tiles -- luacheck: ignore 143
+  return T.Collider((table.unpack or unpack)(tiles)), tiles -- luacheck: ignore 113 143
 end
 
 describe('the outline rule', function()

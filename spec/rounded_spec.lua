@@ -80,7 +80,8 @@ describe('rounded rectangles and polygons', function()
     assert.is_false(r:containsPoint(4.9, 4.9)) -- (in the box, outside the rounded corner)
     assert.is_true(r:containsPoint(4.9, 0))
     assert.is_true(r:containsPoint(4.4, 4.4)) -- (1.4 * sqrt(2) = 1.98 from the core's corner)
-    raisesAt(function() H.Rectangle(0, 0, 10, 4, 0, 2) end, 'strike.Rectangle: radius must be below half the shorter side')
+    raisesAt(function() H.Rectangle(0, 0, 10, 4, 0, 2) end,
+      'strike.Rectangle: radius must be below half the shorter side')
     raisesAt(function() H.Rectangle(0, 0, 10, 4, 0, -1) end, 'strike.Rectangle: radius must be a finite number > 0')
   end)
 
