@@ -74,6 +74,9 @@ function Shape:_setPose(x, y)
   -- (a shape of an incomplete class would fail deep inside the first test that meets it)
   Shape.checkClass(getmetatable(self), ('strike.%s: its class'):format(tostring(self.name)))
   self.kind = self.kind -- an own copy of the class's kind: the dispatch reads it every test
+  -- (an own `_seams`, false unless a compound marks faces: the collider queries read it per
+  -- leaf, and a missing field would cost a walk up the class chain; see VertexShape.lua)
+  if rawget(self, '_seams') == nil then self._seams = false end
   for k = 1, layout.HEADER do
     if self[k] == nil then self[k] = 0 end -- (refreshed before any use: the shape starts dirty)
   end

@@ -17,6 +17,23 @@
 ---               r of its polygon, the core (the vertices above are the core's). Its world
 ---               value is the header's slot R; a rounded shape has the kind 'rounded'
 ---               (collide/rounded.lua), a sharp one 'polygon'.
+---   _seams      false (the usual case), or, for a piece of a compound (the convex pieces of
+---               S.trikers.Concave), one entry per face i (edge i, from vertex i to vertex
+---               i + 1, as getEdge and getNormal number them): false or nil when the face is
+---               a surface; true when the whole face is a seam, a cut inside the compound with
+---               a sibling piece on its other side; or, for a face that is partly seam, partly
+---               outline (collinear outline edges and cuts: the bar of a T under its stem), a
+---               list {a1, b1, a2, b2, ...} of the seam parts as fractions of the face, from
+---               vertex i (0) to vertex i + 1 (1), ascending and disjoint. Parts may touch:
+---               where two meet, at an outline vertex, the point between them is outline.
+---               Collider queries (containsPoint, the ray queries) treat seams as inside, not
+---               as surfaces; the shape's own queries ignore them. Seams describe the piece's
+---               place in the compound it was built for, so they travel with it: copies share
+---               the (never changed) table, transforms keep it (fractions do not change), and
+---               a piece removed from its Concave keeps it, as do the pieces left (their faces
+---               toward the removed one stay seams). Set on every instance, false included:
+---               the ray queries read it per leaf hit, and a missing field would cost a walk
+---               up the class chain. ConvexPolygon:merge carries it over (see _seamsFrom).
 local ROOT = (...):match('^(.-)%.base%.[^%.]+$')
 local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
@@ -85,6 +102,7 @@ function VertexShape:_setVertices(xs, ys, n, cx, cy, area)
     if e < short then short = e end
   end
   self._n, self._l = n, l
+  self._seams = false -- (see the header: an own field, read per leaf by the collider queries)
   self._half = symmetricHalf(l, n)
   local size = layout.size(n)
   for k = 1, size do self[k] = 0 end
@@ -344,6 +362,146 @@ function VertexShape:_farthest(px, py)
     if d > best then best = d end
   end
   return sqrt(best) + self[R]
+end
+
+-- Seams (see the header) ------------------------------------------------------------------
+
+-- A point is on a seam part when it is farther than SEAM_EPS * (|centroid| + radius) from the
+-- part's ends (and, for containsPoint, nearer than that to the face's line): two pieces keep
+-- their copies of a shared outline vertex relative to their own centroids, so the copies
+-- differ by a rounding of the coordinates, far below this.
+local SEAM_EPS = 1e-12
+-- _seamsFrom: a source face lies on a face when its ends are within LINE_EPS * radius (plus
+-- SEAM_EPS of the coordinates) of the face's line; the hull that builds a ConvexPolygon drops
+-- corners that turn by less than 1e-10, so a face may stand for several collinear ones.
+local LINE_EPS = 1e-9
+
+--- (internal) The distance within which seam tests call two points one: SEAM_EPS times the
+--- centroid's coordinates plus the radius. The shape must be fresh (not dirty).
+---@return number
+function VertexShape:_seamTolerance()
+  return SEAM_EPS * (abs(self[X]) + abs(self[Y]) + self._radius * self._scale)
+end
+
+--- (internal) Is the point (px, py), taken to lie on face i's line, on a seam part of face
+--- i, farther than the seam tolerance plus `slack` from that part's ends? False when face i
+--- has no seam. The shape must be fresh; i a whole number from 1 to n.
+---@param i integer
+---@param px number
+---@param py number
+---@param slack number extra distance allowed for the point's own error (0 for exact points)
+---@return boolean
+function VertexShape:_onSeam(i, px, py, slack)
+  local part = self._seams and self._seams[i]
+  if not part then return false end
+  local n = self._n
+  local k, l = STRIDE * i + BASE, STRIDE * (i < n and i + 1 or 1) + BASE
+  local ax, ay = self[k], self[k + VY]
+  local ex, ey = self[l] - ax, self[l + VY] - ay
+  local len = sqrt(ex * ex + ey * ey)
+  local along = ((px - ax) * ex + (py - ay) * ey) / len -- (from vertex i, along the face)
+  local tol = self:_seamTolerance() + slack
+  if part == true then return along > tol and along < len - tol end
+  -- the parts are disjoint and sorted: only the last one starting before the point can hold
+  -- it (a binary search: the comb's bar under its teeth has as many parts as teeth)
+  local lo, hi, m = 1, #part / 2, 0
+  while lo <= hi do
+    local mid = floor((lo + hi) / 2)
+    if part[2 * mid - 1] * len < along then
+      m, lo = mid, mid + 1
+    else
+      hi = mid - 1
+    end
+  end
+  return m > 0 and along > part[2 * m - 1] * len + tol and along < part[2 * m] * len - tol
+end
+
+--- (internal) Is the point (px, py) on a seam part of some face (within the seam tolerance
+--- of the face's line, and farther than it from the part's ends)? What a collider's
+--- containsPoint adds to "strictly inside some leaf".
+---@param px number
+---@param py number
+---@return boolean
+function VertexShape:_onSeams(px, py)
+  local seams = self._seams
+  if not seams then return false end
+  if self._dirty then self:_refresh() end
+  local tol = self:_seamTolerance()
+  for i = 1, self._n do
+    if seams[i] then
+      local k = STRIDE * i + BASE
+      local off = (px - self[k]) * self[k + NX] + (py - self[k + VY]) * self[k + NY]
+      if off <= tol and off >= -tol and self:_onSeam(i, px, py, 0) then return true end
+    end
+  end
+  return false
+end
+
+-- Insertion sort of the intervals (flat pairs lo, hi) by lo.
+local function sortParts(p)
+  for j = 3, #p - 1, 2 do
+    local lo, hi, m = p[j], p[j + 1], j - 2
+    while m >= 1 and p[m] > lo do
+      p[m + 2], p[m + 3] = p[m], p[m + 1]
+      m = m - 2
+    end
+    p[m + 2], p[m + 3] = lo, hi
+  end
+end
+
+--- (internal) The `_seams` of this shape (fresh, built) from the seam faces of the shapes it
+--- was made of: `src` holds `count` faces as x1, y1, x2, y2, seam (world coordinates of the
+--- ends, in the winding of their own polygon; seam: true or a list of parts, as in the
+--- header). A source face lies on face i when both of its ends lie on face i's line (within
+--- LINE_EPS of the radius) and it runs the same way; its seam parts, mapped to face i's
+--- fractions, become face i's. Returns the list, or false when no face got a seam.
+---@param src table
+---@param count integer
+---@return table|false
+function VertexShape:_seamsFrom(src, count)
+  if self._dirty then self:_refresh() end
+  local n = self._n
+  local tol = LINE_EPS * self._radius * self._scale + self:_seamTolerance()
+  local seams, any = {}, false
+  for i = 1, n do
+    local k, l = STRIDE * i + BASE, STRIDE * (i < n and i + 1 or 1) + BASE
+    local ax, ay = self[k], self[k + VY]
+    local ex, ey = self[l] - ax, self[l + VY] - ay
+    local len2 = ex * ex + ey * ey
+    local len = sqrt(len2)
+    local parts, np = nil, 0
+    for q = 1, 5 * count, 5 do
+      local rx, ry, sx, sy, seam = src[q] - ax, src[q + 1] - ay, src[q + 2] - ax, src[q + 3] - ay, src[q + 4]
+      if (sx - rx) * ex + (sy - ry) * ey > 0 and abs(ex * ry - ey * rx) <= tol * len
+        and abs(ex * sy - ey * sx) <= tol * len then
+        local f0, f1 = (rx * ex + ry * ey) / len2, (sx * ex + sy * ey) / len2
+        local m = seam == true and 1 or #seam - 1
+        for j = 1, m, 2 do
+          local a, b = f0, f1
+          if seam ~= true then a, b = f0 + seam[j] * (f1 - f0), f0 + seam[j + 1] * (f1 - f0) end
+          if a < 0 then a = 0 end
+          if b > 1 then b = 1 end
+          if (b - a) * len > tol then
+            parts = parts or {}
+            parts[np + 1], parts[np + 2] = a, b
+            np = np + 2
+          end
+        end
+      end
+    end
+    if parts then
+      any = true
+      if np == 2 and parts[1] * len <= tol and (1 - parts[2]) * len <= tol then
+        seams[i] = true
+      else
+        sortParts(parts)
+        seams[i] = parts
+      end
+    else
+      seams[i] = false
+    end
+  end
+  return any and seams
 end
 
 return VertexShape

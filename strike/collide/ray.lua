@@ -124,11 +124,17 @@ end
 -- the zero vector, checkRay refuses it).
 local unit = limits.unit
 
+-- The faces of polygonClip's last hit, as the slots where their vertex records start (face
+-- i's is layout.base(i)): the entering face (0 when none) and the leaving one. Read by the
+-- leaf-list queries for pieces with seams (see the end of this file).
+local clipIn, clipOut = 0, 0
+
 --- Cyrus–Beck clipping of the ray (origin (ox, oy), unit direction (ux, uy)) against a
 --- convex polygon (3 or more vertices). Returns the interval lo, hi of the whole line
 --- inside the polygon (lo may be negative; hi >= 0) and the normals of the faces that
 --- bound it: the entering face's at lo, the leaving face's at hi (on ties, the first face
---- in order). Returns nil when the ray misses.
+--- in order). Returns nil when the ray misses. Which faces those are is left in clipIn and
+--- clipOut.
 ---@param s strike.VertexShape
 ---@param ox number
 ---@param oy number
@@ -167,6 +173,7 @@ local function polygonClip(s, ox, oy, ux, uy)
   if not (tout >= 0) or tout == huge or tin == huge then return nil end -- luacheck: ignore 581 (NaN reads as a miss)
   local nxLo, nyLo = 0, 0 -- (a ray starting inside has no entering face; lo < 0 is not reported)
   if fin > 0 then nxLo, nyLo = s[fin + NX], s[fin + NY] end
+  clipIn, clipOut = fin, fout
   return tin, tout, nxLo, nyLo, s[fout + NX], s[fout + NY]
 end
 --- The polygon kernel (above): Cyrus–Beck clipping.
@@ -526,9 +533,89 @@ function ray.segmentCast(s, x1, y1, x2, y2)
 end
 
 -- Leaf lists (colliders) ---------------------------------------------------------------
+--
+-- Seams. The faces of a leaf whose `_seams` is set (a piece of a compound, such as the
+-- pieces of S.trikers.Concave; strike/base/VertexShape.lua) may be cuts inside the compound
+-- rather than surfaces, and a ray crossing a cut is inside the compound on both sides: the
+-- queries below report the crossings of the outline only. Each leaf takes the usual path;
+-- only a leaf that was hit and has `_seams` is asked again (seamSpan): which faces bound its
+-- interval (polygonClip leaves them in clipIn, clipOut), and whether each end lies on a seam
+-- part of its face, away from that part's ends (which are outline vertices). An end on a
+-- seam is dropped; for rayCast, the leaf's other end, if not behind the origin, may still
+-- be a hit (a ray starting inside an L leaves it through the outline, not through the cut).
+
+-- Slack of the seam test for a ray's hit point, per unit of distance from where the kernel
+-- measured (the point's error grows with it).
+local SEAM_SLACK = 1e-12
+
+-- Is the end of the last span at the kernel's distance t, bounded by the face whose record
+-- starts at slot k (0: none), on a seam part of that face?
+local function seamEnd(s, k, t, ux, uy)
+  if k == 0 then return false end
+  local i = (k - BASE) / STRIDE
+  if not s._seams[i] then return false end
+  return s:_onSeam(i, shiftX + t * ux, shiftY + t * uy, SEAM_SLACK * abs(t))
+end
+
+-- span, and whether its ends lo and hi are seam crossings (two more values); nil on a miss.
+local function seamSpan(s, ox, oy, ux, uy)
+  clipIn, clipOut = 0, 0 -- (a kernel other than polygonClip leaves them: no face, no seam)
+  local lo, hi, nxLo, nyLo, nxHi, nyHi = span(s, ox, oy, ux, uy)
+  if not lo then return nil end
+  local fin, fout = clipIn, clipOut
+  return lo, hi, nxLo, nyLo, nxHi, nyHi, seamEnd(s, fin, lo, ux, uy), seamEnd(s, fout, hi, ux, uy)
+end
+
+-- fill's list `ts` for a leaf with seams (hit), without the seam crossings; nil when none is
+-- left.
+local function dropSeams(s, ox, oy, ux, uy, ts)
+  local lo, _, _, _, _, _, seamLo, seamHi = seamSpan(s, ox, oy, ux, uy)
+  if not lo then return ts end -- (fill found a hit; the same span cannot miss)
+  -- fill's order: ts[1] is lo's end unless lo is behind the origin (then hi's), ts[2] hi's
+  local n = #ts
+  if n == 2 and seamHi then
+    ts[2] = nil
+    n = 1
+  end
+  local firstSeam = seamHi
+  if lo + shiftT >= 0 then firstSeam = seamLo end
+  if firstSeam then
+    ts[1], ts[2] = ts[2], nil
+    n = n - 1
+  end
+  if n == 0 then return nil end
+  return ts
+end
+
+-- Does the ray (hitting the leaf s, which has seams) cross its outline part at t >= 0?
+local function seamHit(s, ox, oy, ux, uy)
+  local lo, _, _, _, _, _, seamLo, seamHi = seamSpan(s, ox, oy, ux, uy)
+  if not lo then return false end
+  return (lo + shiftT >= 0 and not seamLo) or not seamHi
+end
+
+-- ray.cast for a leaf with seams: the first end at t >= 0 that is not a seam crossing.
+local function seamCast(s, ox, oy, ux, uy, maxDistance)
+  local lo, hi, nxLo, nyLo, nxHi, nyHi, seamLo, seamHi = seamSpan(s, ox, oy, ux, uy)
+  if not lo then return nil end
+  local t, nx, ny
+  if lo + shiftT >= 0 and not seamLo then
+    t, nx, ny = lo, nxLo, nyLo
+  elseif not seamHi then
+    t, nx, ny = hi, nxHi, nyHi
+  else
+    return nil
+  end
+  local d = t + shiftT
+  if d > maxDistance or d == huge then return nil end
+  castFar, castNear = shiftFar, shiftNear + t
+  if d == 0 then d = 0.0 end
+  return d, shiftX + t * ux, shiftY + t * uy, nx, ny
+end
 
 --- The hits on every leaf that is hit: a new table { [shape] = { t1, t2 } } (or { t1 }),
---- or nil when no leaf is hit. Arguments valid.
+--- or nil when no leaf is hit. Crossings of seams are left out (a leaf whose hits were all
+--- on seams is absent). Arguments valid.
 ---@param leaves strike.Shape[]
 ---@param n integer
 ---@param x number
@@ -542,6 +629,7 @@ function ray.leavesIntersections(leaves, n, x, y, dx, dy)
   for i = 1, n do
     local s = leaves[i]
     local ts = fill(s, x, y, ux, uy, nil) -- (a new table only on a hit)
+    if ts and s._seams then ts = dropSeams(s, x, y, ux, uy, ts) end
     if ts then
       result = result or {}
       result[s] = ts
@@ -550,7 +638,8 @@ function ray.leavesIntersections(leaves, n, x, y, dx, dy)
   return result
 end
 
---- True when the ray hits some leaf. Arguments valid; allocates nothing.
+--- True when the ray hits some leaf, not counting crossings of seams (a ray starting inside
+--- a compound crosses its outline on the way out). Arguments valid; allocates nothing.
 ---@param leaves strike.Shape[]
 ---@param n integer
 ---@param x number
@@ -561,19 +650,21 @@ end
 function ray.leavesIntersect(leaves, n, x, y, dx, dy)
   local ux, uy = unit(dx, dy)
   for i = 1, n do
-    if clip(leaves[i], x, y, ux, uy) then return true end
+    local s = leaves[i]
+    if clip(s, x, y, ux, uy) and (not s._seams or seamHit(s, x, y, ux, uy)) then return true end
   end
   return false
 end
 
 -- The first hit over the leaves (unit direction): ray.cast's values and the leaf; on ties
--- the first leaf in order.
+-- the first leaf in order. Crossings of seams are not hits.
 local function leavesCast(leaves, n, ox, oy, ux, uy, maxDistance)
   local bt, bx, by, bnx, bny, best
   local bFar, bNear = 0, 0 -- the best hit's distance as the unrounded sum bFar + bNear
   for i = 1, n do
     local s = leaves[i]
     local t, hx, hy, nx, ny = cast(s, ox, oy, ux, uy, maxDistance)
+    if t and s._seams then t, hx, hy, nx, ny = seamCast(s, ox, oy, ux, uy, maxDistance) end
     -- (equal distances may differ below their rounding when the origin is far: compare the
     -- unrounded sums, so that the nearer leaf still wins)
     if t and (not best or t < bt or (t == bt and (castFar - bFar) + (castNear - bNear) < 0)) then
@@ -587,7 +678,7 @@ local function leavesCast(leaves, n, ox, oy, ux, uy, maxDistance)
 end
 
 --- rayCast over a leaf list (arguments valid): distance, hit point, normal and the leaf
---- hit first (ties: the first leaf in order), or nil.
+--- hit first (ties: the first leaf in order), or nil. Crossings of seams are not hits.
 ---@param leaves strike.Shape[]
 ---@param n integer
 ---@param x number

@@ -1,6 +1,9 @@
 --- A Collider is a tree of shapes and colliders that move together. Its members never
 --- collide with each other. Area, centroid, radius and bounds are aggregates of the leaf
 --- shapes, cached and recomputed on the next query after anything in the tree changes.
+--- Leaves that are pieces of a compound (S.trikers.Concave's) may mark faces as seams, cuts
+--- inside it (`_seams`, strike/base/VertexShape.lua): containsPoint and the ray queries
+--- treat those as inside, at any depth of nesting.
 ---
 --- The cache protocol (shapes and colliders). Every cached value has one flag; whoever
 --- changes what it depends on clears the flag, and the next reader refreshes it.
@@ -415,7 +418,10 @@ function Collider:project(nx, ny)
   return lo, hi
 end
 
---- True when the point is strictly inside some leaf. Takes x, y or {x = , y = }.
+--- True when the point is strictly inside some leaf, or on a seam of one (a cut inside a
+--- compound, such as those between the pieces of S.trikers.Concave: see `_seams` in
+--- strike/base/VertexShape.lua), away from the seam's ends. A point of the outline is not
+--- inside (touching is not inside). Takes x, y or {x = , y = }.
 ---@param x number|table
 ---@param y number|nil
 ---@return boolean
@@ -423,9 +429,13 @@ function Collider:containsPoint(x, y)
   if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:containsPoint') end
   x, y = Shape._point(x, y, 'strike.Collider:containsPoint')
   if not self._leavesOK then refreshLeaves(self) end
-  local leaves = self._leaves
-  for i = 1, self._nleaves do
+  local leaves, n = self._leaves, self._nleaves
+  for i = 1, n do
     if leaves[i]:containsPoint(x, y) then return true end
+  end
+  for i = 1, n do -- (a point on a cut is strictly inside no piece, yet inside the compound)
+    local s = leaves[i]
+    if s._seams and s:_onSeams(x, y) then return true end
   end
   return false
 end
@@ -630,7 +640,8 @@ local leavesIntersections, leavesIntersect, leavesRayCast, leavesSegmentCast = r
 
 --- The hits of the ray from (x, y) along (dx, dy) on every leaf shape it hits: a new table
 --- `{ [shape] = { t1, t2 } }` (`{ t1 }` for a single hit), each list as
---- shape:rayIntersections gives it; nil when no leaf is hit.
+--- shape:rayIntersections gives it, less the crossings of seams (the cuts inside a compound
+--- such as S.trikers.Concave: only its outline is a surface); nil when no leaf is hit.
 ---@param x number
 ---@param y number
 ---@param dx number
@@ -643,7 +654,9 @@ function Collider:rayIntersections(x, y, dx, dy)
   return leavesIntersections(self._leaves, self._nleaves, x, y, dx, dy)
 end
 
---- True when the ray from (x, y) along (dx, dy) hits some leaf shape. Allocates nothing.
+--- True when the ray from (x, y) along (dx, dy) hits some leaf shape (crossings of seams
+--- do not count; a ray starting inside a compound hits its outline on the way out).
+--- Allocates nothing.
 ---@param x number
 ---@param y number
 ---@param dx number
@@ -659,7 +672,8 @@ end
 --- The first boundary point of any leaf along the ray from (x, y) along (dx, dy), at a
 --- distance of at most maxDistance (default math.huge): distance, hit point, outward unit
 --- normal and the leaf shape hit (on ties, the first in elems() order); nil when none.
---- Allocates nothing.
+--- Seams are not boundaries: from inside an S.trikers.Concave, the hit is where the ray
+--- leaves its outline, with the piece that owns that outline edge. Allocates nothing.
 ---@param x number
 ---@param y number
 ---@param dx number

@@ -92,11 +92,33 @@ function ConvexPolygon._checkRounding(fname, r)
   end
 end
 
+-- The faces of the given shapes that are seams (`_seams`, see strike/base/VertexShape.lua),
+-- as VertexShape:_seamsFrom reads them: x1, y1, x2, y2, seam per face; and their count.
+local function seamFaces(a, b)
+  local src, count = {}, 0
+  for _, s in ipairs({ a, b }) do
+    local seams = s._seams
+    if seams then
+      for i = 1, s._n do
+        if seams[i] then
+          local k = 5 * count
+          src[k + 1], src[k + 2], src[k + 3], src[k + 4] = s:getEdge(i)
+          src[k + 5] = seams[i]
+          count = count + 1
+        end
+      end
+    end
+  end
+  return src, count
+end
+
 --- The union of this polygon and `other` as a new ConvexPolygon when that union is convex
 --- (the two touch without overlapping and fill their common hull) and within strike's limits
 --- on lengths, else false.
 --- Test: interiors disjoint (some face separates them, within a relative 1e-9) and
 --- area(hull of both) = area(self) + area(other) (relative 1e-9).
+--- Seams (pieces of a compound, `_seams`): a face of the union is a seam where it runs along
+--- a seam face of either polygon; the face they shared is inside the union and gone.
 ---@param other strike.Shape
 ---@return strike.ConvexPolygon|false
 function ConvexPolygon:merge(other)
@@ -122,6 +144,10 @@ function ConvexPolygon:merge(other)
   for i = 1, h do pts[2 * i - 1], pts[2 * i] = hx[i], hy[i] end
   -- (the union may be outside strike's limits on lengths, limits.lua: then it is no merge)
   local ok, merged = pcall(ConvexPolygon, pts)
+  if ok and (self._seams or other._seams) then
+    local src, count = seamFaces(self, other)
+    if count > 0 then merged._seams = merged:_seamsFrom(src, count) end
+  end
   return ok and merged
 end
 
