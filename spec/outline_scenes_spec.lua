@@ -274,7 +274,7 @@ describe('a box sinking into a floor of touching tiles', function()
     for _, reversed in ipairs({ false, true }) do
       local bad, first = drops(f, 20, reversed)
       assert(bad == 0, ('%s: %d of %d drops pushed sideways or not out; first at %s')
-        :format(reversed and 'S.triking(box, floor)' or 'S.triking(floor, box)', bad, DROPS, first))
+        :format(reversed and 'S.triking(box, floor)' or 'S.triking(floor, box)', bad, DROPS, tostring(first)))
     end
   end)
 

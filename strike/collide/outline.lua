@@ -75,7 +75,7 @@ end
 
 -- The two cores being merged, copied out: vertices and outward edge normals (b's turned
 -- half round: negated), counts; and each one's lowest vertex (least y, then least x).
-local ax, ay, anx, any, bx, by, bnx, bny = {}, {}, {}, {}, {}, {}, {}, {}
+local coreAX, coreAY, coreANX, coreANY, coreBX, coreBY, coreBNX, coreBNY = {}, {}, {}, {}, {}, {}, {}, {}
 
 local function copyCore(s, sign, xs, ys, nxs, nys)
   local n = coreCount(s)
@@ -101,6 +101,8 @@ end
 -- them and keeps that shape's own unit normal (a's, or b's negated), never one computed
 -- from a short difference of nearby points.
 local function addDifference(a, b)
+  local ax, ay, anx, any = coreAX, coreAY, coreANX, coreANY
+  local bx, by, bnx, bny = coreBX, coreBY, coreBNX, coreBNY
   local na, ia = copyCore(a, 1, ax, ay, anx, any)
   local nb, ib = copyCore(b, -1, bx, by, bnx, bny)
   nDiff = nDiff + 1
