@@ -330,6 +330,21 @@ local function cross(i, j)
   end
 end
 
+-- The bounds of the solid leaves (all but chain segments) of a leaf list.
+local function solidBounds(list, n)
+  local x0, y0, x1, y1 = huge, huge, -huge, -huge
+  for i = 1, n do
+    local s = list[i]
+    if s.kind ~= 'chain' then
+      if s[MINX] < x0 then x0 = s[MINX] end
+      if s[MINY] < y0 then y0 = s[MINY] end
+      if s[MAXX] > x1 then x1 = s[MAXX] end
+      if s[MAXY] > y1 then y1 = s[MAXY] end
+    end
+  end
+  return x0, y0, x1, y1
+end
+
 -- Scratch for the pruned feature list.
 local near = {}
 
@@ -377,26 +392,8 @@ function outline.resolve(best, l1, n1, l2, n2)
     return best
   end
   -- An answer known free: lift the second body's bounds clear of the first's.
-  local ax0, ay0, ax1, ay1 = huge, huge, -huge, -huge
-  local bx0, by0, bx1, by1 = huge, huge, -huge, -huge
-  for i = 1, n1 do
-    local s = l1[i]
-    if s.kind ~= 'chain' then
-      if s[MINX] < ax0 then ax0 = s[MINX] end
-      if s[MINY] < ay0 then ay0 = s[MINY] end
-      if s[MAXX] > ax1 then ax1 = s[MAXX] end
-      if s[MAXY] > ay1 then ay1 = s[MAXY] end
-    end
-  end
-  for j = 1, n2 do
-    local s = l2[j]
-    if s.kind ~= 'chain' then
-      if s[MINX] < bx0 then bx0 = s[MINX] end
-      if s[MINY] < by0 then by0 = s[MINY] end
-      if s[MAXX] > bx1 then bx1 = s[MAXX] end
-      if s[MAXY] > by1 then by1 = s[MAXY] end
-    end
-  end
+  local ax0, ay0, ax1, ay1 = solidBounds(l1, n1)
+  local bx0, by0, bx1, by1 = solidBounds(l2, n2)
   local fx, fy = ax1 - bx0, 0
   if bx1 - ax0 < abs(fx) then fx = -(bx1 - ax0) end
   if ay1 - by0 < abs(fx) + abs(fy) then fx, fy = 0, ay1 - by0 end
