@@ -20,10 +20,12 @@ local limits = require(ROOT .. '.limits')
 ---@field separating boolean true when the shapes do not collide (touching is not colliding)
 ---@field collider table|false outermost collider of the first argument (the shape itself if it has none)
 ---@field collided table|false outermost collider of the second argument
----@field colliderShape strike.Shape|false the leaf shape of the first argument (false in a blank MTV)
+---@field colliderShape strike.Shape|false the leaf shape of the first argument (false in a blank MTV;
+--- for bodies with several members, the member whose pair gave the answer)
 ---@field collidedShape strike.Shape|false the leaf shape of the second argument
 ---@field edgeIndex integer i > 0: edge i of colliderShape gave the axis; -j: edge j of collidedShape
---- did; 0: the axis came from a circle (centre to centre, or centre to a vertex)
+--- did; 0: the axis came from a circle (centre to centre, or centre to a vertex), from two rounded
+--- shapes' corners (core vertex to core vertex), or from the outline rule's search (outline.lua)
 local MTV = Object:extend()
 MTV.name = 'MTV'
 MTV.type = 'mtv'
