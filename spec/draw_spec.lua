@@ -67,6 +67,13 @@ describe('drawing', function()
     assert.same({ 'arc', 'polygon', 'arc', 'polygon' }, fill) -- (two half discs, two strips)
     assert.equals('pie', calls[9][3])
     expect.near(calls[9][8] - calls[9][7], math.pi)
+    -- filled with a core polygon: love.graphics.polygon gets the vertex list alone (a count
+    -- after it would be read as a coordinate)
+    H.Rectangle(0, 0, 10, 10, 0, 2):draw('fill')
+    local last = calls[#calls]
+    assert.equals(3, #last)
+    assert.same({ 'polygon', 'fill' }, { last[1], last[2] })
+    expect.nearList(last[3], { -3, -3, 3, -3, 3, 3, -3, 3 })
   end)
 
   it('draws every shape of a collider, nested ones too', function()

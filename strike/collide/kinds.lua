@@ -63,7 +63,7 @@ local function roundedOutline(g, s, mode)
     end
     px, py = nx, ny
   end
-  if mode == 'fill' and n >= 3 then g.polygon('fill', s:getVertices()) end
+  if mode == 'fill' and n >= 3 then g.polygon('fill', (s:getVertices())) end -- (the table alone)
 end
 
 local function roundedNormals(g, s, len)
