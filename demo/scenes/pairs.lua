@@ -41,7 +41,8 @@ local function collide(state)
 end
 
 --- The initial state: four pairs (polygon and rectangle, circle and capsule, ellipse and
---- edge, compound collider and hexagon), the first three overlapping.
+--- edge, compound collider and hexagon), the first three overlapping, and a rectangle with
+--- rounded corners on its own.
 ---@param S table strike @param w number window width @param h number window height
 ---@return table state
 function M.new(S, w, h)
@@ -60,6 +61,7 @@ function M.new(S, w, h)
       body('compound', T.Collider(H.Rectangle(655, 420, 130, 36), H.Rectangle(655, 470, 36, 70),
         H.Circle(700, 470, 22)), { 120, 130, 80 }),
       body('hexagon', T.RegularPolygon(590, 340, 6, 50, 0.2), { 170, 90, 120 }),
+      body('rounded box', T.Rectangle(250, 185, 110, 60, 0.2, 14), { 90, 160, 200 }),
     },
   }
   collide(state)
