@@ -191,6 +191,12 @@ describe('rounded collisions', function()
       assert(m, 'no collision at x = ' .. x)
       near(m.nx, 0, 1e-12, 'x = ' .. x)
       near(m.y, -0.5, 1e-12, 'x = ' .. x)
+      -- (the segment's points: 2 where the flat bottom lies on it, 1 where only the box's end is
+      -- over it; 0.5 deep, midway between the ground and the box's bottom, y = 0.25)
+      local c = S.ite(m)
+      local within = x % 10 >= 2 and x % 10 <= 8 -- (the whole box over one segment)
+      assert.is_true(c.count == 2 or (c.count == 1 and not within), 'x = ' .. x)
+      for i = 1, c.count do nearList({ c[i].y, c[i].depth }, { 0.25, 0.5 }, 1e-12) end
     end
     -- The second segment of a flat chain against a rounded box 0.1 deep whose corner arc
     -- reaches past the segment's start (10, 0): the nearest points give a slanted normal,
