@@ -103,7 +103,6 @@ function compound.collide(body1, body2, out)
     if a._dirty then a:_refresh() end
     local ax0, ay0, ax1, ay1 = a[MINX], a[MINY], a[MAXX], a[MAXY]
     local row = collideOf[a.kind]
-    local chainA = a.kind == 'chain'
     for j = 1, n2 do
       local b = l2[j]
       if b._dirty then b:_refresh() end
@@ -111,7 +110,7 @@ function compound.collide(body1, body2, out)
       -- the narrow phase decides touching), as two tests instead of four: fewer trace
       -- exits under LuaJIT.
       if min(ax1, b[MAXX]) >= max(ax0, b[MINX]) and min(ay1, b[MAXY]) >= max(ay0, b[MINY]) then
-        if chainA or b.kind == 'chain' then
+        if a.kind == 'chain' or b.kind == 'chain' then
           chains = true
         else
           local collide = row[b.kind]
