@@ -168,9 +168,9 @@ function S.ite(mtv, out)
     local l1, n1 = leavesOf(c1, one1)
     local l2, n2 = leavesOf(c2, one2)
     if n1 + n2 > 2 then
-      local count = compoundContacts(mtv, a, b, c1, l1, n1, c2, l2, n2, out)
-      one1[1], one2[1] = nil, nil
-      return count
+      local contacts = compoundContacts(mtv, a, b, c1, l1, n1, c2, l2, n2, out)
+      one1[1], one2[1] = nil, nil -- (bare shapes are not kept alive by strike)
+      return contacts
     end
   end
   local m = mtv

@@ -11,10 +11,13 @@
 --- one feature, the nearest point of a free stretch is the feature's own nearest point,
 --- one of its ends, or a point where another difference's boundary crosses it. So the
 --- answer is the nearest free point among: each feature's nearest point and ends, and
---- every crossing of two features of different differences (the candidate set of exact
---- penetration-depth computations for unions of convex sets; see e.g. Y. J. Kim, M. C.
---- Lin, D. Manocha, "Fast penetration depth computation using rasterization hardware and
---- hierarchical refinement", 2002, on the boundary of the Minkowski sum of a union).
+--- every crossing of two features of different differences. (Penetration depth of bodies
+--- cut into convex pieces as the distance from the origin to the boundary of the union of
+--- the pieces' pairwise Minkowski sums is the formulation of Y. J. Kim, M. C. Lin and
+--- D. Manocha, "Fast penetration depth computation using rasterization hardware and
+--- hierarchical refinement", 2002, who approximate it on graphics hardware; the exact
+--- enumeration of candidates here follows from the argument above.) Ties go to the first
+--- candidate found, in member order: the answer depends on nothing but the bodies.
 ---
 --- Free means: not inside any difference (by more than round-off), and not on a seam: a
 --- candidate on one difference's boundary is moved a hair outward (along the feature's
@@ -27,10 +30,11 @@
 ---
 --- Cost. The deepest pair's own MTV is tried first: its length is a lower bound (every
 --- overlapping pair must be left), so when it is free it is the answer (the usual case: a
---- body on a flat floor of tiles, or in one piece of an outline). Only pairs whose bounds
---- are nearer than an answer already known (at worst, lifting the second body's bounds
---- clear of the first's) take part. Everything lives in module-level scratch arrays:
---- nothing is allocated per call once they have grown.
+--- body on a flat floor of tiles, or in one piece of an outline). Otherwise only pairs whose
+--- bounds are nearer than an answer already known (at worst, lifting the second body's
+--- bounds clear of the first's) take part, and only features that pass through the ring
+--- between that lower bound and the best answer so far. Everything lives in module-level
+--- scratch arrays: nothing is allocated per call once they have grown.
 local ROOT = (...):match('^(.-)%.collide%.[^%.]+$')
 local layout = require(ROOT .. '.base.layout')
 
@@ -281,7 +285,7 @@ local function crossing(i, j, x, y)
   local l = sqrt(ux * ux + uy * uy)
   if l > 0 then ux, uy = ux / l, uy / l end
   if covered(x, y, tolerance, 0) then return end
-  -- (moved out, it must be clear of every difference, its own two included)
+  -- (moved out, it must be clear of every difference with seams, its own two included)
   if l > 0 and coveredAcrossSeams(x + ux * nudge, y + uy * nudge, tolerance, 0) then return end
   bestD2, bestX, bestY, bestM = d2, x, y, fM[i]
 end
