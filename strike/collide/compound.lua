@@ -8,9 +8,8 @@
 --- each, their MTV), or false when no pair collides; bodies under one root collider never
 --- collide. Chain segments are one-sided surfaces, not solids: their pairs keep their own
 --- (ghost-free) MTV, and when one is deeper than the solid members' answer, it is the
---- answer. It reads a collider's
---- leaf list through the cache protocol of colliders/Collider.lua (`_single`: the only
---- leaf, valid while the list is).
+--- answer. It reads a collider's leaf list through the cache protocol of
+--- colliders/Collider.lua (`_single`: the only leaf, valid while the list is).
 local ROOT = (...):match('^(.-)%.collide%.[^%.]+$')
 local MTV = require(ROOT .. '.collide.MTV')
 local Shape = require(ROOT .. '.base.Shape')
