@@ -94,6 +94,13 @@ describe('rounded rectangles and polygons', function()
     assert.is_false(p:containsPoint(-0.70, -0.72)) -- (1.004 from the corner (0, 0))
     raisesAt(function() H.ConvexPolygon({ 0, 0, 1, 0, 0, 1, radius = 'big' }) end,
       'strike.ConvexPolygon: radius must be a finite number > 0')
+    -- unpack gives the arguments that rebuild it: the table form, radius included
+    p:translate(2, 3):scale(2)
+    local again = H.ConvexPolygon(p:unpack())
+    near(again:getRounding(), 2)
+    near(again:getArea(), p:getArea())
+    nearList({ again:getBbox() }, { p:getBbox() })
+    assert.equals(1, select('#', p:unpack()))
   end)
 
   it('its centroid is the area centroid of the grown shape (against a fine grid)', function()

@@ -151,11 +151,17 @@ function ConvexPolygon:merge(other)
   return ok and merged
 end
 
---- Arguments that rebuild the polygon as it is now: its world vertices x1, y1, x2, y2, ...
----@return number ...
+--- Arguments that rebuild the polygon as it is now: its world vertices x1, y1, x2, y2, ...;
+--- for a rounded polygon, one table of them with its radius, {x1, y1, ..., radius = r} (the
+--- table form of the constructor).
+---@return number|table ...
 function ConvexPolygon:unpack()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:unpack') end
   local v = self:getVertices()
+  if self._round > 0 then
+    v.radius = self._round * self._scale
+    return v
+  end
   return unpack(v, 1, 2 * self._n)
 end
 
