@@ -10,11 +10,11 @@
 --- So the pairs are: within each cell, against 4 of the 8 neighbouring cells (right, and the
 --- three above: each neighbouring pair once), and from each box against every coarser level
 --- that holds boxes. This is the hierarchical grid of C. Ericson, Real-Time Collision
---- Detection (2005), 7.2.2 "Hierarchical Grids", with cells hashed instead of stored in a
---- fixed array (7.1.3 "Hashed Storage and Infinite Grids"); the pruning of neighbour cells
---- by the members' actual extents is ours.
+--- Detection (2005), section 7.2 (Hierarchical Grids), with its cells hashed as in 7.1 (an
+--- unbounded grid in a hash table) instead of stored in a fixed array; the pruning of
+--- neighbour cells by the members' actual extents is ours.
 ---
---- Cells are found through an open-addressing hash table (linear probing, deletion by
+--- Cells are the slots of an open-addressing hash table (linear probing, deletion by
 --- backward shift) held in one flat array, so that cells appearing and vanishing as boxes
 --- move never make Lua rehash a table: nothing is allocated once the arrays have grown. A
 --- cell's identity is its level and its coordinates modulo 2^22, so any finite coordinate
@@ -22,6 +22,13 @@
 --- correctness (their boxes cannot overlap, and every test is exact). Boxes smaller than
 --- 2^-16 (points) go to level -16, unless their distance from the origin asks for a coarser
 --- level to keep cell coordinates exact (cells are at least 2^-40 of it).
+---
+--- Shaped for LuaJIT: update only notes a box that left its cell (settle, called by pairs
+--- and query, refiles them all in one loop of its own), and pairs lists the cells to look
+--- up before looking them up in one tight loop. A branch off a loop is compiled as a side
+--- trace that must hold every value live there in registers; in the caller's loop, or in
+--- one loop doing everything, those are too many and LuaJIT gives up ("register coalescing
+--- too complex"), compiling and aborting side traces until it flushes them all.
 ---
 --- Proxies and cells are records in flat number arrays; a cell's members form a list linked
 --- through the proxy records. Pairs are packed as a * 2^26 + b and sorted, so their order
@@ -52,47 +59,62 @@ for li = 1, NLEVELS do
 end
 local LOG2 = log(2)
 
--- Proxy records: proxy id's fields are at p[id * PS + field].
+-- Proxy records, the fields that finding pairs reads: proxy id's are at p[id * PS + field].
 local MINX, MINY, MAXX, MAXY = 1, 2, 3, 4
-local LEVEL = 5 -- level index, 0 while the id is free
+local NEXT = 5 -- the next member of its cell (0 ends the list)
 local CX, CY = 6, 7 -- the cell of the min corner (true coordinates, not wrapped)
-local CELL = 8 -- the cell record holding the proxy
-local NEXT, PREV = 9, 10 -- the cell's member list (0 ends it)
-local LOW = 11 -- a box this small or smaller moves to a finer level (-1: never)
-local PS = 11
+local LEVEL = 8 -- its level index; negated when the box may not move to a finer level
+-- (set by the floor or by its distance from the origin); 0 while the id is free
+local PS = 8
+-- The other fields, at q[id * QS + field].
+local CELL = 1 -- its cell record
+local PREV = 2 -- the previous member of its cell (0: it is the first)
+local PENDING = 3 -- 1 while it waits in the moved list to be refiled, else 0
+local QS = 3
 
--- Cell records: cell c's fields are at c[c * CS + field].
-local CKEY = 1 -- identity: level, x and y modulo WRAP, packed
-local CLEVEL, CWX, CWY = 2, 3, 4 -- level index and wrapped coordinates
-local CHEAD = 5 -- first member (0: the record is free)
-local CPOS = 6 -- index in the list of live cells
-local CS = 6
+-- Cell records, at c[cr * CS + field]: where the cell is in the hash table, and what its
+-- home slot is computed from.
+local CSLOT, CLEVEL, CWX, CWY = 1, 2, 3, 4
+local CS = 4
 
--- The hash table: slot s (0 .. cap - 1) holds a cell key at h[2s + 1] (EMPTY when unused)
--- and the cell record's index at h[2s + 2].
+-- The hash table: slot s (0 .. cap + TAIL - 1) holds a cell's key at h[3s + 1] (EMPTY when the slot
+-- is unused), its first member at h[3s + 2] (0 when unused) and its record at h[3s + 3]. A
+-- key packs the level index and the cell's coordinates modulo WRAP.
 local WRAP = 4194304 -- 2^22
 local WRAP2 = WRAP * WRAP
 local EMPTY = -1
 local K1, K2, K3 = 1664525, 22695477, 40503 -- odd multipliers mixing the parts of a key
+local LOAD = 0.5 -- the table grows past this share of used slots
+-- Every cell lies fewer than WINDOW slots after its home slot (the table grows when an
+-- insertion finds no room there), so a lookup probes at most WINDOW slots; it stops at an
+-- empty one (deletion shifts later entries back, leaving no hole inside a run). Home slots
+-- are 0 .. cap - 1 and probes run on into the TAIL slots after them, never wrapping round.
+local WINDOW = 8
+local TAIL = WINDOW
 
 local PAIR = 67108864 -- 2^26: pairs are packed as a * PAIR + b
 
 -- Scratch shared by every grid: packed pairs (or query results) to sort, and its length.
 local keys, nKeys = {}, 0
 
+local function clearSlots(h, cap)
+  for s = 0, cap + TAIL - 1 do h[3 * s + 1], h[3 * s + 2], h[3 * s + 3] = EMPTY, 0, 0 end
+end
+
 --- A new, empty grid.
 ---@return table grid
 function HGrid.new()
   local self = setmetatable({
-    p = {}, -- proxy records
+    p = {}, q = {}, -- proxy records
     nIds = 0, -- ids ever used
     free = {}, nFree = 0, -- freed ids (a stack)
+    moved = {}, nMoved = 0, -- ids whose cell or level changed since the last settle
     nProxies = 0,
     c = {}, -- cell records
     nCellRecs = 0,
     cfree = {}, nCfree = 0, -- free cell records (a stack)
-    live = {}, nLive = 0, -- live cells (those with members), in any order
-    h = {}, cap = 0, -- the hash table
+    nCells = 0, -- cells with members
+    h = {}, cap = 61, -- the hash table
     perLevel = {}, -- proxies per level index
     levels = {}, nLevels = 0, -- the level indices that hold proxies, ascending
     levelPos = {}, -- level index -> its position in `levels`, or 0
@@ -100,9 +122,7 @@ function HGrid.new()
   for li = 1, NLEVELS do
     self.perLevel[li], self.levelPos[li] = 0, 0
   end
-  local h, cap = self.h, 61
-  for s = 0, cap - 1 do h[2 * s + 1], h[2 * s + 2] = EMPTY, 0 end
-  self.cap = cap
+  clearSlots(self.h, self.cap)
   return self
 end
 
@@ -111,20 +131,16 @@ local function home(li, wx, wy, cap)
   return (wx * K1 + wy * K2 + li * K3) % cap
 end
 
--- The cell record of level li holding cell (cx, cy), or 0; then its key, and the slot where
--- the probe ended (the cell's, or the empty one where it would go).
-local function find(h, cap, li, cx, cy)
-  local wx, wy = cx % WRAP, cy % WRAP
-  local key = li * WRAP2 + wx * WRAP + wy
-  local s = (wx * K1 + wy * K2 + li * K3) % cap
-  local k = h[2 * s + 1]
-  while k ~= key do
-    if k == EMPTY then return 0, key, s end
+-- The slot of the cell with this key, probing from slot s: the cell's slot when it has
+-- members, else -1 - the empty slot that ends the probe run.
+local function probe(h, key, s)
+  local k = h[3 * s + 1]
+  while k ~= key and k ~= EMPTY do
     s = s + 1
-    if s == cap then s = 0 end
-    k = h[2 * s + 1]
+    k = h[3 * s + 1]
   end
-  return h[2 * s + 2], key, s
+  if k == EMPTY then return -1 - s end
+  return s
 end
 
 local function isPrime(n)
@@ -137,63 +153,63 @@ local function isPrime(n)
   return true
 end
 
--- Grow the hash table to a prime capacity above twice the old one, and refile every live
--- cell (the only allocation of the cell storage: it happens when the table fills, never in
--- a steady state).
-local function grow(self)
-  local cap = 2 * self.cap + 1
-  while not isPrime(cap) do cap = cap + 2 end
-  local h, c, live = {}, self.c, self.live
-  for s = 0, cap - 1 do h[2 * s + 1], h[2 * s + 2] = EMPTY, 0 end
-  for i = 1, self.nLive do
-    local cr = live[i]
-    local b = cr * CS
-    local s = home(c[b + CLEVEL], c[b + CWX], c[b + CWY], cap)
-    while h[2 * s + 1] ~= EMPTY do
-      s = s + 1
-      if s == cap then s = 0 end
-    end
-    h[2 * s + 1], h[2 * s + 2] = c[b + CKEY], cr
-  end
-  self.h, self.cap = h, cap
+local function nextPrime(n)
+  if n % 2 == 0 then n = n + 1 end
+  while not isPrime(n) do n = n + 2 end
+  return n
 end
 
--- Remove cell record cr (now without members) from the hash table and the live list.
-local function dropCell(self, cr)
-  local c, h, cap = self.c, self.h, self.cap
-  local b = cr * CS
-  local key = c[b + CKEY]
-  local i = home(c[b + CLEVEL], c[b + CWX], c[b + CWY], cap)
-  while h[2 * i + 1] ~= key do
-    i = i + 1
-    if i == cap then i = 0 end
-  end
-  -- Backward shift: pull later entries of the probe run into the hole when their home slot
-  -- does not lie cyclically in (hole, entry].
-  local j = i
-  while true do
-    j = j + 1
-    if j == cap then j = 0 end
-    local k = h[2 * j + 1]
-    if k == EMPTY then break end
-    local e = h[2 * j + 2] * CS
-    local hs = home(c[e + CLEVEL], c[e + CWX], c[e + CWY], cap)
-    local stays
-    if i <= j then stays = i < hs and hs <= j else stays = i < hs or hs <= j end
-    if not stays then
-      h[2 * i + 1], h[2 * i + 2] = k, h[2 * j + 2]
-      i = j
+-- Refile every cell of the hash table into a new one of capacity cap; false (and nothing
+-- changed) if a cell would land WINDOW slots or more from its home.
+local function refile(self, cap)
+  local old, oldCap, c = self.h, self.cap, self.c
+  local h = {}
+  clearSlots(h, cap)
+  for t = 0, oldCap + TAIL - 1 do
+    local cr = old[3 * t + 3]
+    if old[3 * t + 1] ~= EMPTY then
+      local s0 = home(c[cr * CS + CLEVEL], c[cr * CS + CWX], c[cr * CS + CWY], cap)
+      local s = s0
+      while h[3 * s + 1] ~= EMPTY do s = s + 1 end
+      if s - s0 >= WINDOW then return false end
+      h[3 * s + 1], h[3 * s + 2], h[3 * s + 3] = old[3 * t + 1], old[3 * t + 2], cr
     end
   end
-  h[2 * i + 1], h[2 * i + 2] = EMPTY, 0
-  -- out of the live list (the last one takes its place)
-  local live, n = self.live, self.nLive
-  local pos = c[b + CPOS]
-  local last = live[n]
-  live[pos] = last
-  c[last * CS + CPOS] = pos
-  self.nLive = n - 1
-  c[b + CHEAD] = 0
+  for s = 0, cap + TAIL - 1 do
+    if h[3 * s + 1] ~= EMPTY then c[h[3 * s + 3] * CS + CSLOT] = s end
+  end
+  self.h, self.cap = h, cap
+  return true
+end
+
+-- Grow the hash table to a prime capacity above twice the old one (the only allocation of
+-- the cell storage: it happens when the table fills, never in a steady state).
+local function grow(self)
+  local cap = nextPrime(2 * self.cap + 1)
+  while not refile(self, cap) do cap = nextPrime(2 * cap + 1) end
+end
+
+-- Remove cell record cr (now without members) and its slot.
+local function dropCell(self, cr)
+  local c, h, cap = self.c, self.h, self.cap
+  local i = c[cr * CS + CSLOT]
+  -- Backward shift: pull each later entry of the probe run into the hole when its home slot
+  -- is at or before the hole.
+  local j = i + 1
+  local k = h[3 * j + 1]
+  while k ~= EMPTY and j - i < WINDOW do
+    local er = h[3 * j + 3]
+    local e = er * CS
+    if home(c[e + CLEVEL], c[e + CWX], c[e + CWY], cap) <= i then
+      h[3 * i + 1], h[3 * i + 2], h[3 * i + 3] = k, h[3 * j + 2], er
+      c[e + CSLOT] = i
+      i = j
+    end
+    j = j + 1
+    k = h[3 * j + 1]
+  end
+  h[3 * i + 1], h[3 * i + 2], h[3 * i + 3] = EMPTY, 0, 0
+  self.nCells = self.nCells - 1
   local nf = self.nCfree + 1
   self.cfree[nf], self.nCfree = cr, nf
 end
@@ -201,11 +217,22 @@ end
 -- File proxy id (its record already holds LEVEL, CX and CY) in its cell, making the cell
 -- if it has no members yet.
 local function link(self, id)
-  local p, c = self.p, self.c
+  local p, q, c = self.p, self.q, self.c
   local pb = id * PS
   local li, cx, cy = p[pb + LEVEL], p[pb + CX], p[pb + CY]
-  local cr, key, s = find(self.h, self.cap, li, cx, cy)
-  if cr == 0 then
+  if li < 0 then li = -li end
+  local wx, wy = cx % WRAP, cy % WRAP
+  local key = li * WRAP2 + wx * WRAP + wy
+  local s0 = home(li, wx, wy, self.cap)
+  local s = probe(self.h, key, s0)
+  local cr
+  if s < 0 then
+    while self.nCells + 1 > LOAD * self.cap or -1 - s - s0 >= WINDOW do
+      grow(self)
+      s0 = home(li, wx, wy, self.cap)
+      s = probe(self.h, key, s0)
+    end
+    s = -1 - s
     local nf = self.nCfree
     if nf > 0 then
       cr = self.cfree[nf]
@@ -215,33 +242,34 @@ local function link(self, id)
       self.nCellRecs = cr
     end
     local b = cr * CS
-    c[b + CKEY], c[b + CLEVEL], c[b + CWX], c[b + CWY], c[b + CHEAD] = key, li, cx % WRAP, cy % WRAP, 0
+    c[b + CSLOT], c[b + CLEVEL], c[b + CWX], c[b + CWY] = s, li, wx, wy
     local h = self.h
-    h[2 * s + 1], h[2 * s + 2] = key, cr
-    local n = self.nLive + 1
-    self.live[n], self.nLive = cr, n
-    c[b + CPOS] = n
-    if 2 * n > self.cap then grow(self) end
+    h[3 * s + 1], h[3 * s + 2], h[3 * s + 3] = key, 0, cr
+    self.nCells = self.nCells + 1
+  else
+    cr = self.h[3 * s + 3]
   end
-  local b = cr * CS
-  local head = c[b + CHEAD]
-  p[pb + CELL], p[pb + NEXT], p[pb + PREV] = cr, head, 0
-  if head ~= 0 then p[head * PS + PREV] = id end
-  c[b + CHEAD] = id
+  local h = self.h
+  local head = h[3 * s + 2]
+  p[pb + NEXT] = head
+  q[id * QS + CELL], q[id * QS + PREV] = cr, 0
+  if head ~= 0 then q[head * QS + PREV] = id end
+  h[3 * s + 2] = id
 end
 
 -- Take proxy id out of its cell's member list, dropping the cell when it empties.
 local function unlink(self, id)
-  local p, c = self.p, self.c
-  local pb = id * PS
-  local cr, nx, pv = p[pb + CELL], p[pb + NEXT], p[pb + PREV]
+  local p, q = self.p, self.q
+  local cr, pv = q[id * QS + CELL], q[id * QS + PREV]
+  local nx = p[id * PS + NEXT]
   if pv ~= 0 then
     p[pv * PS + NEXT] = nx
   else
-    c[cr * CS + CHEAD] = nx
+    local s = self.c[cr * CS + CSLOT]
+    self.h[3 * s + 2] = nx
+    if nx == 0 then dropCell(self, cr) end
   end
-  if nx ~= 0 then p[nx * PS + PREV] = pv end
-  if c[cr * CS + CHEAD] == 0 then dropCell(self, cr) end
+  if nx ~= 0 then q[nx * QS + PREV] = pv end
 end
 
 -- The list of levels holding proxies, ascending, rebuilt when a level fills or empties.
@@ -260,8 +288,8 @@ local function relist(self)
   self.nLevels = n
 end
 
--- The level index for a box, and the size at or below which it should move to a finer
--- level (-1 when its level was set by the floor or by its distance from the origin).
+-- The level index for a box, negated when the box may not later move to a finer one (its
+-- level was set by the floor or by its distance from the origin).
 local function levelOf(minx, miny, maxx, maxy)
   local s = maxx - minx
   if maxy - miny > s then s = maxy - miny end
@@ -270,18 +298,20 @@ local function levelOf(minx, miny, maxx, maxy)
   if abs(miny) > far then far = abs(miny) end
   if abs(maxy) > far then far = abs(maxy) end
   far = far * GUARD
-  local bySize = true
-  if far > s then s, bySize = far, false end
-  if s < cell[1] then return 1, -1 end
+  local sign = 1
+  if far > s then s, sign = far, -1 end
+  if s < cell[1] then return -1 end
   local li = floor(log(s) / LOG2) - MINLEVEL + 1
   if li < 1 then li = 1 elseif li > NLEVELS then li = NLEVELS end
   while li < NLEVELS and cell[li] <= s do li = li + 1 end
   while li > 1 and cell[li - 1] > s do li = li - 1 end
-  return li, (bySize and li > 1) and cell[li] * 0.25 or -1
+  if li == 1 then sign = -1 end
+  return sign * li
 end
 
 -- Move a level's proxy count by d, relisting the levels when one fills or empties.
 local function countLevel(self, li, d)
+  if li < 0 then li = -li end
   local n = self.perLevel[li] + d
   self.perLevel[li] = n
   if n == 0 or n == d then relist(self) end
@@ -293,6 +323,36 @@ end
 
 local function boxText(minx, miny, maxx, maxy)
   return ('(%s, %s, %s, %s)'):format(tostring(minx), tostring(miny), tostring(maxx), tostring(maxy))
+end
+
+-- Put proxy id, whose bounds have changed, in the cell and level they now ask for.
+local function refileProxy(self, id)
+  local p = self.p
+  local b = id * PS
+  local minx, miny, maxx, maxy = p[b + MINX], p[b + MINY], p[b + MAXX], p[b + MAXY]
+  unlink(self, id)
+  local sl, nsl = p[b + LEVEL], levelOf(minx, miny, maxx, maxy)
+  if nsl ~= sl then
+    countLevel(self, sl, -1)
+    countLevel(self, nsl, 1)
+  end
+  local iv = inv[nsl < 0 and -nsl or nsl]
+  p[b + LEVEL], p[b + CX], p[b + CY] = nsl, floor(minx * iv), floor(miny * iv)
+  link(self, id)
+end
+
+--- Refile the proxies that have left their cells since the last call. pairs and query do
+--- it first; there is no need to call it, except to choose when the work is done.
+function HGrid:settle()
+  local q, moved = self.q, self.moved
+  for i = 1, self.nMoved do
+    local id = moved[i]
+    if q[id * QS + PENDING] == 1 then
+      q[id * QS + PENDING] = 0
+      refileProxy(self, id)
+    end
+  end
+  self.nMoved = 0
 end
 
 --- Add a box; returns its proxy id (see the module's header for how ids are reused).
@@ -318,12 +378,13 @@ function HGrid:insert(minx, miny, maxx, maxy)
   end
   local p = self.p
   local b = id * PS
-  local li, low = levelOf(minx, miny, maxx, maxy)
-  local iv = inv[li]
+  local sl = levelOf(minx, miny, maxx, maxy)
+  local iv = inv[sl < 0 and -sl or sl]
   p[b + MINX], p[b + MINY], p[b + MAXX], p[b + MAXY] = minx, miny, maxx, maxy
-  p[b + LEVEL], p[b + CX], p[b + CY], p[b + LOW] = li, floor(minx * iv), floor(miny * iv), low
+  p[b + LEVEL], p[b + CX], p[b + CY] = sl, floor(minx * iv), floor(miny * iv)
+  self.q[id * QS + PENDING] = 0
   link(self, id)
-  countLevel(self, li, 1)
+  countLevel(self, sl, 1)
   self.nProxies = self.nProxies + 1
   return id
 end
@@ -337,31 +398,33 @@ end
 function HGrid:update(id, minx, miny, maxx, maxy)
   local p = self.p
   local b = id * PS
-  local li = p[b + LEVEL]
-  if not li or li == 0 or badBox(minx, miny, maxx, maxy) then
-    if not li or li == 0 then error('hgrid:update: no proxy ' .. tostring(id), 2) end
+  local sl = p[b + LEVEL]
+  if not sl or sl == 0 or badBox(minx, miny, maxx, maxy) then
+    if not sl or sl == 0 then error('hgrid:update: no proxy ' .. tostring(id), 2) end
     error('hgrid:update: expected finite numbers minx <= maxx, miny <= maxy, got '
       .. boxText(minx, miny, maxx, maxy), 2)
   end
   p[b + MINX], p[b + MINY], p[b + MAXX], p[b + MAXY] = minx, miny, maxx, maxy
   local s = maxx - minx
   if maxy - miny > s then s = maxy - miny end
-  if s < cell[li] and s > p[b + LOW] then
+  local li, low = sl, -1
+  if li < 0 then li = -li else low = cell[li] * 0.25 end
+  if s < cell[li] and s > low then
     local iv = inv[li]
-    local cx, cy = floor(minx * iv), floor(miny * iv)
-    if cx == p[b + CX] and cy == p[b + CY] then return end
+    if floor(minx * iv) == p[b + CX] and floor(miny * iv) == p[b + CY] then return end
     -- a new cell: look at the level again too (the distance from the origin may ask for
     -- a coarser one)
   end
-  unlink(self, id)
-  local nli, low = levelOf(minx, miny, maxx, maxy)
-  if nli ~= li then
-    countLevel(self, li, -1)
-    countLevel(self, nli, 1)
+  -- Refiled later, in settle: its own loop, compiled apart from the caller's (LuaJIT's side
+  -- traces from the caller's loop inherit every value live there, and too many of them
+  -- make it give up compiling). Until then it stays in its old cell's list.
+  local q = self.q
+  if q[id * QS + PENDING] == 0 then
+    q[id * QS + PENDING] = 1
+    local n = self.nMoved + 1
+    self.moved[n], self.nMoved = id, n
+    if n > 2 * self.nIds + 16 then self:settle() end -- (stale entries from removes)
   end
-  local iv = inv[nli]
-  p[b + LEVEL], p[b + CX], p[b + CY], p[b + LOW] = nli, floor(minx * iv), floor(miny * iv), low
-  link(self, id)
 end
 
 --- Remove proxy id; its id becomes free for reuse.
@@ -369,11 +432,12 @@ end
 function HGrid:remove(id)
   local p = self.p
   local b = id * PS
-  local li = p[b + LEVEL]
-  if not li or li == 0 then error('hgrid:remove: no proxy ' .. tostring(id), 2) end
+  local sl = p[b + LEVEL]
+  if not sl or sl == 0 then error('hgrid:remove: no proxy ' .. tostring(id), 2) end
   unlink(self, id)
-  countLevel(self, li, -1)
+  countLevel(self, sl, -1)
   p[b + LEVEL] = 0
+  self.q[id * QS + PENDING] = 0 -- (settle skips its entry in the moved list)
   local nf = self.nFree + 1
   self.free[nf], self.nFree = id, nf
   self.nProxies = self.nProxies - 1
@@ -383,6 +447,119 @@ end
 ---@return integer
 function HGrid:count()
   return self.nProxies
+end
+
+-- Finding pairs runs in passes, each a loop of its own with few values live: LuaJIT
+-- compiles a branch taken off a loop as a side trace that must hold every value live there
+-- in registers at once, and gives up ("register coalescing too complex") when they are too
+-- many. So cells to look up are first listed as requests (whose boxes: a cell's members,
+-- from their first, or one box, negated; and the key and home slot of the cell wanted),
+-- then looked up in one tight loop, then their pairs tested.
+local rqWho, rqKey, rqHome = {}, {}, {}
+
+-- Add a request for level li's cell (cx, cy) on behalf of `who`; the new count.
+local function request(r, who, li, cx, cy, cap)
+  local wx, wy = cx % WRAP, cy % WRAP
+  r = r + 1
+  rqWho[r], rqKey[r], rqHome[r] = who, li * WRAP2 + wx * WRAP + wy, (wx * K1 + wy * K2 + li * K3) % cap
+  return r
+end
+
+-- Look every request up, leaving in rqKey the first member of the cell found, or 0.
+local function resolve(h, nr)
+  for r = 1, nr do
+    local s = probe(h, rqKey[r], rqHome[r])
+    rqKey[r] = s >= 0 and h[3 * s + 2] or 0
+  end
+end
+
+-- Pairs among the members of one cell (from `head`), appended to keys[n + 1 ..]; the new n.
+local function within(p, head, n)
+  local a = head
+  while a ~= 0 do
+    local ab = a * PS
+    local bb = p[ab + NEXT]
+    while bb ~= 0 do
+      local qb = bb * PS
+      if p[qb + MINX] <= p[ab + MAXX] and p[ab + MINX] <= p[qb + MAXX] and p[qb + MINY] <= p[ab + MAXY]
+        and p[ab + MINY] <= p[qb + MAXY] then
+        n = n + 1
+        if a < bb then keys[n] = a * PAIR + bb else keys[n] = bb * PAIR + a end
+      end
+      bb = p[qb + NEXT]
+    end
+    a = p[ab + NEXT]
+  end
+  return n
+end
+
+-- Whether some member of a cell reaches the next cell right (1), up (2) or both (3).
+local function reaches(p, head, size)
+  local r = 0
+  local a = head
+  while a ~= 0 do
+    local ab = a * PS
+    if r % 2 == 0 and p[ab + MAXX] >= (p[ab + CX] + 1) * size then r = r + 1 end
+    if r < 2 and p[ab + MAXY] >= (p[ab + CY] + 1) * size then r = r + 2 end
+    a = p[ab + NEXT]
+  end
+  return r
+end
+
+-- Pairs between box a and the members of a cell (from `other`); the new n.
+local function against(p, a, other, n)
+  local ab = a * PS
+  local x0, y0, x1, y1 = p[ab + MINX], p[ab + MINY], p[ab + MAXX], p[ab + MAXY]
+  local bb = other
+  while bb ~= 0 do
+    local qb = bb * PS
+    if p[qb + MINX] <= x1 and x0 <= p[qb + MAXX] and p[qb + MINY] <= y1 and y0 <= p[qb + MAXY] then
+      n = n + 1
+      if a < bb then keys[n] = a * PAIR + bb else keys[n] = bb * PAIR + a end
+    end
+    bb = p[qb + NEXT]
+  end
+  return n
+end
+
+-- Pairs between the members of two cells; the new n.
+local function across(p, head, other, n)
+  local a = head
+  while a ~= 0 do
+    n = against(p, a, other, n)
+    a = p[a * PS + NEXT]
+  end
+  return n
+end
+
+-- The requests for the neighbouring cells of head's cell that its members reach: right,
+-- up-left, up and up-right (each neighbouring pair of cells once); the new count.
+local function neighbours(p, head, r, cap)
+  local hb = head * PS
+  local li = p[hb + LEVEL]
+  if li < 0 then li = -li end
+  local reach = reaches(p, head, cell[li])
+  if reach == 0 then return r end
+  local cx, cy = p[hb + CX], p[hb + CY]
+  if reach ~= 2 then r = request(r, head, li, cx + 1, cy, cap) end
+  if reach >= 2 then
+    r = request(r, head, li, cx - 1, cy + 1, cap)
+    r = request(r, head, li, cx, cy + 1, cap)
+    if reach == 3 then r = request(r, head, li, cx + 1, cy + 1, cap) end
+  end
+  return r
+end
+
+-- The requests for the cells of coarser level lm whose boxes (narrower than a cell there)
+-- can reach box a; the new count.
+local function coarser(p, a, lm, r, cap)
+  local ab = a * PS
+  local iv = inv[lm]
+  local gx0, gx1 = floor(p[ab + MINX] * iv) - 1, floor(p[ab + MAXX] * iv)
+  for gy = floor(p[ab + MINY] * iv) - 1, floor(p[ab + MAXY] * iv) do
+    for gx = gx0, gx1 do r = request(r, -a, lm, gx, gy, cap) end
+  end
+  return r
 end
 
 -- Sort keys[1 .. n] (n is the new length: longer old contents are cleared first, so that
@@ -400,99 +577,35 @@ end
 ---@param out table
 ---@return integer n the number of pairs
 function HGrid:pairs(out)
-  local p, c, h, cap = self.p, self.c, self.h, self.cap
-  local live = self.live
+  if self.nMoved > 0 then self:settle() end
+  local p, h, cap = self.p, self.h, self.cap
+  local n, r = 0, 0
+  -- Within each cell; and requests for the neighbouring cells of the same level.
+  for slot = 0, cap + TAIL - 1 do
+    local head = h[3 * slot + 2]
+    if head ~= 0 then
+      n = within(p, head, n)
+      r = neighbours(p, head, r, cap)
+    end
+  end
+  -- Requests for the cells of every coarser level that holds boxes, for each box.
   local levels, nLevels, levelPos = self.levels, self.nLevels, self.levelPos
-  local n = 0
-  for i = 1, self.nLive do
-    local cb = live[i] * CS
-    local li = c[cb + CLEVEL]
-    local size = cell[li]
-    local head = c[cb + CHEAD]
-    -- Pairs within the cell; and whether any member reaches into the next cell right or up.
-    local right, up = false, false
-    local a = head
-    while a ~= 0 do
-      local ab = a * PS
-      local ax0, ay0, ax1, ay1 = p[ab + MINX], p[ab + MINY], p[ab + MAXX], p[ab + MAXY]
-      if ax1 >= (p[ab + CX] + 1) * size then right = true end
-      if ay1 >= (p[ab + CY] + 1) * size then up = true end
-      local bb = p[ab + NEXT]
-      while bb ~= 0 do
-        local q = bb * PS
-        if p[q + MINX] <= ax1 and ax0 <= p[q + MAXX] and p[q + MINY] <= ay1 and ay0 <= p[q + MAXY] then
-          n = n + 1
-          if a < bb then keys[n] = a * PAIR + bb else keys[n] = bb * PAIR + a end
-        end
-        bb = p[q + NEXT]
-      end
-      a = p[ab + NEXT]
-    end
-    -- Against the neighbouring cells right, up-left, up and up-right (each neighbouring
-    -- pair of cells once).
-    if right or up then
-      local hb = head * PS
-      local cx, cy = p[hb + CX], p[hb + CY]
-      for k = 1, 4 do
-        local nx, ny
-        if k == 1 then nx, ny = cx + 1, cy
-        elseif k == 2 then nx, ny = cx - 1, cy + 1
-        elseif k == 3 then nx, ny = cx, cy + 1
-        else nx, ny = cx + 1, cy + 1 end
-        if (k == 1 and right) or (k ~= 1 and up and (k ~= 4 or right)) then
-          local nr = find(h, cap, li, nx, ny)
-          if nr ~= 0 then
-            local bb = c[nr * CS + CHEAD]
-            while bb ~= 0 do
-              local q = bb * PS
-              local bx0, by0, bx1, by1 = p[q + MINX], p[q + MINY], p[q + MAXX], p[q + MAXY]
-              a = head
-              while a ~= 0 do
-                local ab = a * PS
-                if bx0 <= p[ab + MAXX] and p[ab + MINX] <= bx1 and by0 <= p[ab + MAXY] and p[ab + MINY] <= by1 then
-                  n = n + 1
-                  if a < bb then keys[n] = a * PAIR + bb else keys[n] = bb * PAIR + a end
-                end
-                a = p[ab + NEXT]
-              end
-              bb = p[q + NEXT]
-            end
-          end
-        end
+  if nLevels > 1 then
+    local last = levels[nLevels]
+    for a = 1, self.nIds do
+      local li = p[a * PS + LEVEL]
+      if li < 0 then li = -li end
+      if li ~= 0 and li ~= last then
+        for k = levelPos[li] + 1, nLevels do r = coarser(p, a, levels[k], r, cap) end
       end
     end
-    -- Each member against every coarser level that holds boxes: the cells there whose
-    -- boxes (narrower than a cell) can reach it.
-    local first = levelPos[li] + 1
-    if first <= nLevels then
-      a = head
-      while a ~= 0 do
-        local ab = a * PS
-        local ax0, ay0, ax1, ay1 = p[ab + MINX], p[ab + MINY], p[ab + MAXX], p[ab + MAXY]
-        for k = first, nLevels do
-          local lm = levels[k]
-          local iv = inv[lm]
-          local gx0, gx1 = floor(ax0 * iv) - 1, floor(ax1 * iv)
-          local gy0, gy1 = floor(ay0 * iv) - 1, floor(ay1 * iv)
-          for gy = gy0, gy1 do
-            for gx = gx0, gx1 do
-              local nr = find(h, cap, lm, gx, gy)
-              if nr ~= 0 then
-                local bb = c[nr * CS + CHEAD]
-                while bb ~= 0 do
-                  local q = bb * PS
-                  if p[q + MINX] <= ax1 and ax0 <= p[q + MAXX] and p[q + MINY] <= ay1 and ay0 <= p[q + MAXY] then
-                    n = n + 1
-                    if a < bb then keys[n] = a * PAIR + bb else keys[n] = bb * PAIR + a end
-                  end
-                  bb = p[q + NEXT]
-                end
-              end
-            end
-          end
-        end
-        a = p[ab + NEXT]
-      end
+  end
+  resolve(h, r)
+  for i = 1, r do
+    local other = rqKey[i]
+    if other ~= 0 then
+      local who = rqWho[i]
+      if who > 0 then n = across(p, who, other, n) else n = against(p, -who, other, n) end
     end
   end
   sortKeys(n)
@@ -523,7 +636,8 @@ function HGrid:query(minx, miny, maxx, maxy, out)
     or not (minx <= maxx and miny <= maxy) then
     error('hgrid:query: expected numbers minx <= maxx, miny <= maxy, got ' .. boxText(minx, miny, maxx, maxy), 2)
   end
-  local p, c, h, cap = self.p, self.c, self.h, self.cap
+  if self.nMoved > 0 then self:settle() end
+  local p, h, cap = self.p, self.h, self.cap
   local levels, nLevels = self.levels, self.nLevels
   local k = 0
   -- The cells to visit; past the number of proxies (or where wrapped cells could repeat),
@@ -532,37 +646,40 @@ function HGrid:query(minx, miny, maxx, maxy, out)
   for j = 1, nLevels do
     local iv = inv[levels[j]]
     local w, t = floor(maxx * iv) - floor(minx * iv) + 2, floor(maxy * iv) - floor(miny * iv) + 2
-    if w >= WRAP or t >= WRAP then cells = huge; break end
+    if w >= WRAP or t >= WRAP then
+      cells = huge
+      break
+    end
     cells = cells + w * t
   end
   if cells > self.nProxies then
     for id = 1, self.nIds do
       local b = id * PS
-      local li = p[b + LEVEL]
-      if li ~= 0 and p[b + MINX] <= maxx and minx <= p[b + MAXX] and p[b + MINY] <= maxy and miny <= p[b + MAXY] then
+      if p[b + LEVEL] ~= 0 and p[b + MINX] <= maxx and minx <= p[b + MAXX] and p[b + MINY] <= maxy
+        and miny <= p[b + MAXY] then
         k = k + 1
         keys[k] = id
       end
     end
   else
+    local r = 0
     for j = 1, nLevels do
       local lm = levels[j]
       local iv = inv[lm]
       for gy = floor(miny * iv) - 1, floor(maxy * iv) do
-        for gx = floor(minx * iv) - 1, floor(maxx * iv) do
-          local nr = find(h, cap, lm, gx, gy)
-          if nr ~= 0 then
-            local bb = c[nr * CS + CHEAD]
-            while bb ~= 0 do
-              local q = bb * PS
-              if p[q + MINX] <= maxx and minx <= p[q + MAXX] and p[q + MINY] <= maxy and miny <= p[q + MAXY] then
-                k = k + 1
-                keys[k] = bb
-              end
-              bb = p[q + NEXT]
-            end
-          end
+        for gx = floor(minx * iv) - 1, floor(maxx * iv) do r = request(r, 0, lm, gx, gy, cap) end
+      end
+    end
+    resolve(h, r)
+    for i = 1, r do
+      local bb = rqKey[i]
+      while bb ~= 0 do
+        local qb = bb * PS
+        if p[qb + MINX] <= maxx and minx <= p[qb + MAXX] and p[qb + MINY] <= maxy and miny <= p[qb + MAXY] then
+          k = k + 1
+          keys[k] = bb
         end
+        bb = p[qb + NEXT]
       end
     end
   end
