@@ -121,6 +121,11 @@ local function run(seed, cx, cy, side, rounds)
       end
     end
     assert.are.equal(#ids, tree:count())
+    do -- a query before pairs: the moves reach the tree first
+      local x0, y0, x1, y1 = randomBox(rng, cx, cy, side)
+      local k = tree:query(x0, y0, x1, y1, out)
+      sameList(out, k, 1, oracleQuery(o, x0, y0, x1, y1), 'query before pairs', seed)
+    end
     local n = tree:pairs(out)
     sameList(out, n, 2, oraclePairs(o), 'pairs', seed)
     for _ = 1, 3 do
