@@ -1,0 +1,727 @@
+--- A dynamic AABB tree broadphase: candidate 1 for the world's broadphase (S.pace).
+---
+--- Design (ideas from Box2D's b2DynamicTree and broad phase, E. Catto, v2.4 and v3; no
+--- code taken):
+--- * A binary tree whose leaves hold one proxy each, stored in flat number arrays indexed
+---   by node (parent, two children, height, box, proxy id) with a free list of nodes.
+--- * Each leaf holds a fat box: the proxy's exact box grown by a margin of (w + h) / 4 on
+---   every side (4-14 px for 8-28 px bodies, 0.5 px for a 1 px bullet, about 500 px for a
+---   2,000 px platform, nothing for a point), then stretched ahead along the last
+---   displacement by 4 times that displacement, at most w + h per axis (so a teleport does
+---   not leave a huge box behind). Margins scale with each box, so nothing depends on units
+---   or on the distance from the origin. Moving a box inside its fat box costs a few
+---   comparisons; leaving it reinserts the leaf and puts the proxy in the move buffer.
+--- * Insertion walks down choosing the child whose enlarged perimeter, plus the growth it
+---   causes in every ancestor, costs least (a surface-area heuristic in 2D, after Box2D
+---   v2.4's InsertLeaf). On the way back up, every node tries the four swaps of a child with
+---   a grandchild on the other side and makes the one that shrinks the perimeter most (tree
+---   rotations by area, as in Box2D v3, after Kopta et al., "Fast, effective BVH updates for
+---   animated scenes", 2012); a node whose sides differ in height by more than 2 is first
+---   rotated AVL-like (as in Box2D v2.4's Balance), which bounds the depth when area gives no
+---   preference (many equal boxes).
+--- * Pairs are kept, not searched for every frame (Box2D's pair set and move buffer): the
+---   tree keeps the pairs whose fat boxes overlap, sorted by (a, b). `pairs` queries the
+---   tree with the fat box of each proxy that moved out of its fat box (or was added) since
+---   the last call, radix-sorts what it finds, merges it into the kept list (dropping the
+---   old pairs of moved or removed proxies) and emits the candidates whose exact boxes
+---   overlap. A frame costs O(n + candidates + moved log n); every loop is flat, with no
+---   short inner loops (LuaJIT compiles them into few traces).
+--- * Results are sorted (ids ascending), so they never depend on insertion history.
+---
+--- Ids: positive integers, stable until removed; a removed id is reused, lowest free first.
+--- Boxes are closed: boxes that touch overlap. Nothing is allocated per call once the
+--- arrays have grown to the world's size (n proxies, their candidates, the largest result).
+local Tree = {}
+Tree.__index = Tree
+
+local min, max, huge = math.min, math.max, math.huge
+local JIT = rawget(_G, 'jit') ~= nil
+
+--- Fat margin on each side, as a fraction of the box's width + height. (Measured on 8-28 px
+--- bodies moving 0.5-2 px a frame: 1/8 moves 12% of them out of their fat boxes each frame,
+--- 1/4 8% (1.7 times the candidates, 40% less time on Lua 5.4), 1/2 5% (3.6 times).)
+local MARGIN = 0.25
+--- The fat box reaches this many displacements ahead of the box...
+local PREDICT = 4
+--- ...but at most this fraction of the box's width + height, per axis.
+local PREDICT_LIMIT = 1
+--- A node whose children's heights differ by more than this is rotated AVL-like (2 or 3
+--- fight the rotations by area: as deep, and 3 to 30 times as many rotations).
+local AVL_SLACK = 4
+--- Sorts up to this many entries by insertion, longer ones by heapsort.
+local SHORT_SORT = 12
+-- A proxy's pending tree work.
+local NONE, MOVED, NEW = 0, 1, 2
+
+--- A new, empty tree.
+---@return table
+function Tree.new()
+  return setmetatable({
+    -- nodes: 0 is "none"; a leaf has child1 == 0 and height 0
+    parent = {}, child1 = {}, child2 = {}, height = {}, proxyOf = {},
+    -- fat boxes (unions of children for inner nodes); node 0's is infinite (see rotateArea)
+    nx0 = { [0] = -huge }, ny0 = { [0] = -huge }, nx1 = { [0] = huge }, ny1 = { [0] = huge },
+    root = 0, nodeTop = 0, freeNode = 0,
+    -- proxies: leaf node (0 when free), exact box, and mark[id] == frame when the proxy is
+    -- in the move buffer (its kept pairs are stale)
+    leaf = {}, px0 = {}, py0 = {}, px1 = {}, py1 = {}, mark = {},
+    fx0 = {}, fy0 = {}, fx1 = {}, fy1 = {}, -- the fat box the leaf has or will have
+    pending = {}, -- NONE, MOVED (the leaf's box is stale) or NEW (not in the tree yet)
+    idTop = 0, live = 0, frame = 1,
+    freeIds = {}, nFreeIds = 0, -- a binary min-heap of free ids
+    moved = {}, nMoved = 0, -- the move buffer
+    ca = {}, cb = {}, nCand = 0, -- kept pairs (fat boxes overlap), a < b, ascending
+    da = {}, db = {}, -- the other buffer of the merge
+    ka = {}, kb = {}, ta = {}, tb = {}, histogram = {}, -- new pairs, radix sort scratch
+    stack = {}, -- scratch
+  }, Tree)
+end
+
+------------------------------------------------------------------ sorting (no allocation)
+
+-- Heapsort's step: move t[root] down the max-heap t[root..last] to its place.
+local function sift(t, root, last)
+  local v = t[root]
+  while true do
+    local c = 2 * root
+    if c > last then break end
+    if c < last and t[c + 1] > t[c] then c = c + 1 end
+    if t[c] <= v then break end
+    t[root] = t[c]
+    root = c
+  end
+  t[root] = v
+end
+
+-- Sort t[1..n] ascending: insertion sort when short, else heapsort (in place).
+local function sortRange(t, n)
+  if n <= SHORT_SORT then
+    for i = 2, n do
+      local v, j = t[i], i - 1
+      while j >= 1 and t[j] > v do
+        t[j + 1] = t[j]
+        j = j - 1
+      end
+      t[j + 1] = v
+    end
+    return
+  end
+  for i = (n - n % 2) / 2, 1, -1 do sift(t, i, n) end
+  for last = n, 2, -1 do
+    t[1], t[last] = t[last], t[1]
+    sift(t, 1, last - 1)
+  end
+end
+
+------------------------------------------------------------------ ids: lowest free first
+
+local function takeId(self)
+  local h, n = self.freeIds, self.nFreeIds
+  if n == 0 then
+    local id = self.idTop + 1
+    self.idTop = id
+    return id
+  end
+  local id, v = h[1], h[n]
+  n = n - 1
+  self.nFreeIds = n
+  local i = 1
+  while true do -- sift v down from the root
+    local c = 2 * i
+    if c > n then break end
+    if c < n and h[c + 1] < h[c] then c = c + 1 end
+    if h[c] >= v then break end
+    h[i] = h[c]
+    i = c
+  end
+  if n > 0 then h[i] = v end
+  return id
+end
+
+local function giveId(self, id)
+  local h, i = self.freeIds, self.nFreeIds + 1
+  self.nFreeIds = i
+  while i > 1 do -- sift up
+    local p = (i - i % 2) / 2
+    if h[p] <= id then break end
+    h[i] = h[p]
+    i = p
+  end
+  h[i] = id
+end
+
+------------------------------------------------------------------ nodes
+
+local function newNode(self)
+  local n = self.freeNode
+  if n ~= 0 then
+    self.freeNode = self.parent[n] -- the free list is threaded through `parent`
+  else
+    n = self.nodeTop + 1
+    self.nodeTop = n
+  end
+  self.parent[n], self.child1[n], self.child2[n], self.height[n], self.proxyOf[n] = 0, 0, 0, 0, 0
+  return n
+end
+
+local function freeNode(self, n)
+  self.parent[n], self.child1[n], self.height[n] = self.freeNode, 0, -1
+  self.freeNode = n
+end
+
+-- Recompute an inner node's box and height from its children.
+--
+-- The functions that run on every level of the tree come in two spellings: with
+-- math.min/max, which LuaJIT compiles into branch-free instructions (written with `if`,
+-- every comparison becomes a side exit, and the descent's combinations of them overflow
+-- the trace cache and flush it), and with `if`, which the interpreters of Lua 5.1-5.4 run
+-- faster than a call. Measured with bench/broadphase/measure_tree.lua.
+local refit
+if JIT then
+  refit = function(self, n)
+    local c1, c2 = self.child1, self.child2
+    local x0, y0, x1, y1, h = self.nx0, self.ny0, self.nx1, self.ny1, self.height
+    local a, b = c1[n], c2[n]
+    x0[n], y0[n] = min(x0[a], x0[b]), min(y0[a], y0[b])
+    x1[n], y1[n] = max(x1[a], x1[b]), max(y1[a], y1[b])
+    h[n] = 1 + max(h[a], h[b])
+  end
+else
+  refit = function(self, n)
+    local c1, c2 = self.child1, self.child2
+    local x0, y0, x1, y1, h = self.nx0, self.ny0, self.nx1, self.ny1, self.height
+    local a, b = c1[n], c2[n]
+    local ax0, ay0, ax1, ay1, ha = x0[a], y0[a], x1[a], y1[a], h[a]
+    local bx0, by0, bx1, by1, hb = x0[b], y0[b], x1[b], y1[b], h[b]
+    x0[n] = ax0 < bx0 and ax0 or bx0
+    y0[n] = ay0 < by0 and ay0 or by0
+    x1[n] = ax1 > bx1 and ax1 or bx1
+    y1[n] = ay1 > by1 and ay1 or by1
+    h[n] = 1 + (ha > hb and ha or hb)
+  end
+end
+
+-- Node a's child c is taller than its sibling by 2 or more: c takes a's place, keeps its
+-- taller child, and hands the shorter one to a in c's old slot. Returns c.
+--
+--        a                c
+--       / \              / \
+--      b   c     ->     a   f      (f the taller of f, g)
+--         / \          / \
+--        f   g        b   g
+local function rotateUp(self, a, c)
+  local parent, c1, c2, h = self.parent, self.child1, self.child2, self.height
+  local f, g = c1[c], c2[c]
+  if h[g] > h[f] then f, g = g, f end
+  local p = parent[a]
+  parent[c] = p
+  if p == 0 then
+    self.root = c
+  elseif c1[p] == a then
+    c1[p] = c
+  else
+    c2[p] = c
+  end
+  c1[c], c2[c] = a, f
+  parent[a] = c
+  if c1[a] == c then c1[a] = g else c2[a] = g end
+  parent[g] = a
+  refit(self, a)
+  return c
+end
+
+-- Half perimeter of the union of nodes a and b's boxes (two spellings: see refit).
+local perimOf
+if JIT then
+  perimOf = function(self, a, b)
+    local x0, y0, x1, y1 = self.nx0, self.ny0, self.nx1, self.ny1
+    return max(x1[a], x1[b]) - min(x0[a], x0[b]) + max(y1[a], y1[b]) - min(y0[a], y0[b])
+  end
+else
+  perimOf = function(self, a, b)
+    local x0, y0, x1, y1 = self.nx0, self.ny0, self.nx1, self.ny1
+    local ux0, uy0, ux1, uy1 = x0[a], y0[a], x1[a], y1[a]
+    local vx0, vy0, vx1, vy1 = x0[b], y0[b], x1[b], y1[b]
+    if vx0 < ux0 then ux0 = vx0 end
+    if vy0 < uy0 then uy0 = vy0 end
+    if vx1 > ux1 then ux1 = vx1 end
+    if vy1 > uy1 then uy1 = vy1 end
+    return ux1 - ux0 + uy1 - uy0
+  end
+end
+
+-- Swap child `out` of node a (the one not holding `inner`) with grandchild `g` under
+-- `inner`, then refit inner. a's box is unchanged; its height may change.
+local function swap(self, a, out, inner, g)
+  local parent, c1, c2 = self.parent, self.child1, self.child2
+  if c1[a] == out then c1[a] = g else c2[a] = g end
+  if c1[inner] == g then c1[inner] = out else c2[inner] = out end
+  parent[g], parent[out] = a, inner
+  refit(self, inner)
+end
+
+-- Tree rotation by surface area (Box2D v3's tree rotations, after Kopta et al., "Fast,
+-- effective BVH updates for animated scenes", 2012): of the four swaps of a child of n
+-- with a grandchild on the other side, make the one that shrinks the changed child's
+-- perimeter most, if any does (then returns true). n's own box is unchanged. A leaf's
+-- "children" are node 0, whose box is infinite: swaps with them never gain.
+local function rotateArea(self, n)
+  local c1, c2, x0, y0, x1, y1 = self.child1, self.child2, self.nx0, self.ny0, self.nx1, self.ny1
+  local b, c = c1[n], c2[n]
+  local d, e, f, g = c1[b], c2[b], c1[c], c2[c]
+  local pb, pc = x1[b] - x0[b] + y1[b] - y0[b], x1[c] - x0[c] + y1[c] - y0[c]
+  local gainF = pc - perimOf(self, b, g) -- swap b and f: c becomes (b, g)
+  local gainG = pc - perimOf(self, b, f)
+  local gainD = pb - perimOf(self, c, e)
+  local gainE = pb - perimOf(self, c, d)
+  local best = max(gainF, gainG, gainD, gainE) -- (no branch on LuaJIT in the usual case)
+  if best <= 0 then return false end
+  if best == gainF then
+    swap(self, n, b, c, f)
+  elseif best == gainG then
+    swap(self, n, b, c, g)
+  elseif best == gainD then
+    swap(self, n, c, b, d)
+  else
+    swap(self, n, c, b, e)
+  end
+  return true
+end
+
+-- Refit and rebalance the nodes from n up: AVL-like when one side is much taller, then by
+-- area. Stops at the first node that comes out as it was (box, height, children), since
+-- nothing above it changes then.
+local function fixUp(self, n)
+  local parent, c1, c2, h = self.parent, self.child1, self.child2, self.height
+  local x0, y0, x1, y1 = self.nx0, self.ny0, self.nx1, self.ny1
+  while n ~= 0 do
+    local a, b = c1[n], c2[n]
+    local d = h[b] - h[a]
+    local same = true
+    if d > AVL_SLACK then
+      n, same = rotateUp(self, n, b), false
+    elseif d < -AVL_SLACK then
+      n, same = rotateUp(self, n, a), false
+    end
+    local ox0, oy0, ox1, oy1, oh = x0[n], y0[n], x1[n], y1[n], h[n]
+    refit(self, n)
+    if rotateArea(self, n) then
+      refit(self, n) -- (the height may change)
+      same = false
+    end
+    if same and x0[n] == ox0 and y0[n] == oy0 and x1[n] == ox1 and y1[n] == oy1 and h[n] == oh then return end
+    n = parent[n]
+  end
+end
+
+
+-- The sibling for a new leaf: descend to the node whose pairing costs least, where the cost
+-- of stopping at node n is twice the half perimeter of n + leaf (the new parent and the
+-- enlarged ancestors), and going down to child c adds the growth of c (its enlarged half
+-- perimeter, less its own if c is an inner node whose cost is already counted) to the
+-- growth n passes on to its ancestors.
+-- (Two spellings: see refit.)
+local findSibling
+if JIT then
+  findSibling = function(self, leaf)
+    local c1, c2, h = self.child1, self.child2, self.height
+    local x0, y0, x1, y1 = self.nx0, self.ny0, self.nx1, self.ny1
+    local lx0, ly0, lx1, ly1 = x0[leaf], y0[leaf], x1[leaf], y1[leaf]
+    local n = self.root
+    while c1[n] ~= 0 do -- (min(height, 1): 0 for a leaf, 1 for an inner node, no branch)
+      local a, b = c1[n], c2[n]
+      local combined = max(x1[n], lx1) - min(x0[n], lx0) + max(y1[n], ly1) - min(y0[n], ly0)
+      local cost = 2 * combined
+      local inherit = 2 * (combined - (x1[n] - x0[n] + y1[n] - y0[n]))
+      local costA = max(x1[a], lx1) - min(x0[a], lx0) + max(y1[a], ly1) - min(y0[a], ly0) + inherit
+        - min(h[a], 1) * (x1[a] - x0[a] + y1[a] - y0[a])
+      local costB = max(x1[b], lx1) - min(x0[b], lx0) + max(y1[b], ly1) - min(y0[b], ly0) + inherit
+        - min(h[b], 1) * (x1[b] - x0[b] + y1[b] - y0[b])
+      if cost < costA and cost < costB then break end
+      if costB < costA then n = b else n = a end
+    end
+    return n
+  end
+else
+  findSibling = function(self, leaf)
+    local c1, c2 = self.child1, self.child2
+    local x0, y0, x1, y1 = self.nx0, self.ny0, self.nx1, self.ny1
+    local lx0, ly0, lx1, ly1 = x0[leaf], y0[leaf], x1[leaf], y1[leaf]
+    local n = self.root
+    while c1[n] ~= 0 do -- (written out: no calls, for the interpreters)
+      local a, b = c1[n], c2[n]
+      local ux0, uy0, ux1, uy1 = x0[n], y0[n], x1[n], y1[n]
+      local area = ux1 - ux0 + uy1 - uy0
+      if lx0 < ux0 then ux0 = lx0 end
+      if ly0 < uy0 then uy0 = ly0 end
+      if lx1 > ux1 then ux1 = lx1 end
+      if ly1 > uy1 then uy1 = ly1 end
+      local combined = ux1 - ux0 + uy1 - uy0
+      local cost, inherit = 2 * combined, 2 * (combined - area)
+      ux0, uy0, ux1, uy1 = x0[a], y0[a], x1[a], y1[a]
+      local costA = inherit
+      if c1[a] ~= 0 then costA = costA - (ux1 - ux0 + uy1 - uy0) end
+      if lx0 < ux0 then ux0 = lx0 end
+      if ly0 < uy0 then uy0 = ly0 end
+      if lx1 > ux1 then ux1 = lx1 end
+      if ly1 > uy1 then uy1 = ly1 end
+      costA = costA + (ux1 - ux0 + uy1 - uy0)
+      ux0, uy0, ux1, uy1 = x0[b], y0[b], x1[b], y1[b]
+      local costB = inherit
+      if c1[b] ~= 0 then costB = costB - (ux1 - ux0 + uy1 - uy0) end
+      if lx0 < ux0 then ux0 = lx0 end
+      if ly0 < uy0 then uy0 = ly0 end
+      if lx1 > ux1 then ux1 = lx1 end
+      if ly1 > uy1 then uy1 = ly1 end
+      costB = costB + (ux1 - ux0 + uy1 - uy0)
+      if cost < costA and cost < costB then break end
+      if costB < costA then n = b else n = a end
+    end
+    return n
+  end
+end
+
+-- Put leaf into the tree, beside the sibling findSibling chooses.
+local function insertLeaf(self, leaf)
+  if self.root == 0 then
+    self.root = leaf
+    self.parent[leaf] = 0
+    return
+  end
+  local parent, c1, c2 = self.parent, self.child1, self.child2
+  local n = findSibling(self, leaf)
+  local old = parent[n]
+  local p = newNode(self)
+  parent[p], c1[p], c2[p] = old, n, leaf
+  parent[n], parent[leaf] = p, p
+  if old == 0 then
+    self.root = p
+  elseif c1[old] == n then
+    c1[old] = p
+  else
+    c2[old] = p
+  end
+  fixUp(self, p)
+end
+
+local function removeLeaf(self, leaf)
+  if leaf == self.root then
+    self.root = 0
+    return
+  end
+  local parent, c1, c2 = self.parent, self.child1, self.child2
+  local p = parent[leaf]
+  local g = parent[p]
+  local sibling = c1[p] == leaf and c2[p] or c1[p]
+  freeNode(self, p)
+  parent[sibling] = g
+  if g == 0 then
+    self.root = sibling
+    return
+  end
+  if c1[g] == p then c1[g] = sibling else c2[g] = sibling end
+  fixUp(self, g)
+end
+
+------------------------------------------------------------------ pairs
+
+-- Query the tree with the fat box of moved proxy i and append the pairs it finds to ka, kb
+-- (smaller id first) from position k + 1; returns the new end. A pair of two moved proxies
+-- is added by the query of the smaller one only.
+local function findPairs(self, i, k)
+  local leaf, mark, frame = self.leaf[i], self.mark, self.frame
+  local c1, c2, proxyOf = self.child1, self.child2, self.proxyOf
+  local x0, y0, x1, y1 = self.nx0, self.ny0, self.nx1, self.ny1
+  local ka, kb = self.ka, self.kb
+  local qx0, qy0, qx1, qy1 = x0[leaf], y0[leaf], x1[leaf], y1[leaf]
+  local stack, top = self.stack, 1
+  stack[1] = self.root
+  while top > 0 do
+    local n = stack[top]
+    top = top - 1
+    if x0[n] <= qx1 and x1[n] >= qx0 and y0[n] <= qy1 and y1[n] >= qy0 then
+      local a = c1[n]
+      if a ~= 0 then
+        stack[top + 1], stack[top + 2] = a, c2[n]
+        top = top + 2
+      else
+        local j = proxyOf[n]
+        if j > i then
+          k = k + 1
+          ka[k], kb[k] = i, j
+        elseif j < i and mark[j] ~= frame then
+          k = k + 1
+          ka[k], kb[k] = j, i
+        end
+      end
+    end
+  end
+  return k
+end
+
+-- Put proxy id in the move buffer (once per frame): its kept pairs are stale.
+local function pushMoved(self, id)
+  local mark, frame = self.mark, self.frame
+  if mark[id] ~= frame then
+    mark[id] = frame
+    local n = self.nMoved + 1
+    self.nMoved = n
+    self.moved[n] = id
+  end
+end
+
+-- Bring the tree up to date with the moves and inserts in the move buffer (Box2D v3 also
+-- defers its tree work to the step: the updates run in one loop, not in the caller's).
+local function flush(self)
+  local moved, pending, leafOf = self.moved, self.pending, self.leaf
+  local fx0, fy0, fx1, fy1 = self.fx0, self.fy0, self.fx1, self.fy1
+  local x0, y0, x1, y1 = self.nx0, self.ny0, self.nx1, self.ny1
+  for m = 1, self.nMoved do
+    local id = moved[m]
+    local state = pending[id]
+    if state ~= NONE then
+      local leaf = leafOf[id]
+      if state == MOVED then removeLeaf(self, leaf) end
+      x0[leaf], y0[leaf], x1[leaf], y1[leaf] = fx0[id], fy0[id], fx1[id], fy1[id]
+      insertLeaf(self, leaf)
+      pending[id] = NONE
+    end
+  end
+end
+
+-- Stable counting sort of the k pairs (sa, sb) by sa (the key array given first) into
+-- (da, db); ids are 1 .. top.
+local function countingSort(count, top, key, other, k, dkey, dother)
+  for id = 1, top do count[id] = 0 end
+  for i = 1, k do
+    local v = key[i]
+    count[v] = count[v] + 1
+  end
+  local at = 1
+  for id = 1, top do
+    local c = count[id]
+    count[id] = at
+    at = at + c
+  end
+  for i = 1, k do
+    local v = key[i]
+    local p = count[v]
+    count[v] = p + 1
+    dkey[p], dother[p] = v, other[i]
+  end
+end
+
+------------------------------------------------------------------ public API
+
+local function checkBox(fn, minx, miny, maxx, maxy)
+  if not (minx <= maxx and miny <= maxy) then -- (false for NaN too)
+    error(('tree.%s: expected minx <= maxx and miny <= maxy, got %s, %s, %s, %s'):format(
+      fn, tostring(minx), tostring(miny), tostring(maxx), tostring(maxy)), 3)
+  end
+end
+
+local function checkId(self, fn, id)
+  local leaf = self.leaf[id]
+  if not leaf or leaf == 0 then
+    error(('tree.%s: expected the id of a proxy in this tree, got %s'):format(fn, tostring(id)), 3)
+  end
+  return leaf
+end
+
+-- Give proxy id the fat box of its exact box moved by (dx, dy) since last time.
+local function fatten(self, id, minx, miny, maxx, maxy, dx, dy)
+  local s = (maxx - minx) + (maxy - miny)
+  local m = s * MARGIN
+  local x0, y0, x1, y1 = minx - m, miny - m, maxx + m, maxy + m
+  local limit = s * PREDICT_LIMIT
+  dx, dy = dx * PREDICT, dy * PREDICT
+  if dx > limit then dx = limit elseif dx < -limit then dx = -limit end
+  if dy > limit then dy = limit elseif dy < -limit then dy = -limit end
+  if dx > 0 then x1 = x1 + dx else x0 = x0 + dx end
+  if dy > 0 then y1 = y1 + dy else y0 = y0 + dy end
+  self.fx0[id], self.fy0[id], self.fx1[id], self.fy1[id] = x0, y0, x1, y1
+end
+
+--- Add a proxy for the box (closed: a box of zero size is a point or a segment).
+---@param minx number
+---@param miny number
+---@param maxx number
+---@param maxy number
+---@return integer id positive, stable until removed; the lowest free id is reused first
+function Tree:insert(minx, miny, maxx, maxy)
+  checkBox('insert', minx, miny, maxx, maxy)
+  local id = takeId(self)
+  self.px0[id], self.py0[id], self.px1[id], self.py1[id] = minx, miny, maxx, maxy
+  local leaf = newNode(self)
+  self.leaf[id], self.proxyOf[leaf] = leaf, id
+  fatten(self, id, minx, miny, maxx, maxy, 0, 0)
+  self.pending[id] = NEW
+  pushMoved(self, id)
+  self.live = self.live + 1
+  return id
+end
+
+--- Give a proxy its new exact box. Cheap while the box stays inside its fat box.
+---@param id integer
+---@param minx number
+---@param miny number
+---@param maxx number
+---@param maxy number
+function Tree:update(id, minx, miny, maxx, maxy)
+  checkId(self, 'update', id)
+  checkBox('update', minx, miny, maxx, maxy)
+  local px0, py0, px1, py1 = self.px0, self.py0, self.px1, self.py1
+  local dx = (minx + maxx - px0[id] - px1[id]) * 0.5
+  local dy = (miny + maxy - py0[id] - py1[id]) * 0.5
+  px0[id], py0[id], px1[id], py1[id] = minx, miny, maxx, maxy
+  if minx >= self.fx0[id] and miny >= self.fy0[id] and maxx <= self.fx1[id] and maxy <= self.fy1[id] then
+    return
+  end
+  fatten(self, id, minx, miny, maxx, maxy, dx, dy)
+  local pending = self.pending
+  if pending[id] == NONE then pending[id] = MOVED end
+  pushMoved(self, id)
+end
+
+--- Remove a proxy; its id becomes free for reuse.
+---@param id integer
+function Tree:remove(id)
+  local leaf = checkId(self, 'remove', id)
+  pushMoved(self, id) -- (its kept pairs become stale)
+  if self.pending[id] ~= NEW then removeLeaf(self, leaf) end
+  self.pending[id] = NONE
+  freeNode(self, leaf)
+  self.leaf[id] = 0
+  giveId(self, id)
+  self.live = self.live - 1
+end
+
+--- Every pair of proxies whose exact boxes overlap (touching counts), each once.
+---@param out table filled as {a1, b1, a2, b2, ...} with a < b, ascending by (a, b); entries past 2n are cleared
+---@return integer n the number of pairs
+function Tree:pairs(out)
+  local ca, cb, nCand = self.ca, self.cb, self.nCand
+  local px0, py0, px1, py1 = self.px0, self.py0, self.px1, self.py1
+  local nMoved = self.nMoved
+  if nMoved > 0 then
+    -- the pairs of the moved proxies, sorted by (a, b): radix sort, b then a
+    flush(self)
+    local moved, leaf, k = self.moved, self.leaf, 0
+    for m = 1, nMoved do
+      local i = moved[m]
+      if leaf[i] ~= 0 then k = findPairs(self, i, k) end -- (removed since: skipped)
+    end
+    local ka, kb, ta, tb, top = self.ka, self.kb, self.ta, self.tb, self.idTop
+    countingSort(self.histogram, top, kb, ka, k, tb, ta)
+    countingSort(self.histogram, top, ta, tb, k, ka, kb)
+    -- merge them with the kept pairs of proxies that did not move, into (da, db)
+    local da, db, mark, frame = self.da, self.db, self.mark, self.frame
+    local i, j, d = 1, 1, 0
+    while true do -- (one flat loop)
+      if i <= nCand then
+        local a, b = ca[i], cb[i]
+        if mark[a] == frame or mark[b] == frame then -- stale: dropped
+          i = i + 1
+        elseif j <= k and (ka[j] < a or (ka[j] == a and kb[j] < b)) then
+          d = d + 1
+          da[d], db[d] = ka[j], kb[j]
+          j = j + 1
+        else
+          d = d + 1
+          da[d], db[d] = a, b
+          i = i + 1
+        end
+      elseif j <= k then
+        d = d + 1
+        da[d], db[d] = ka[j], kb[j]
+        j = j + 1
+      else
+        break
+      end
+    end
+    self.ca, self.cb, self.da, self.db = da, db, ca, cb
+    ca, cb, nCand = da, db, d
+    self.nCand, self.nMoved, self.frame = d, 0, frame + 1
+  end
+  local n = 0
+  for c = 1, nCand do
+    local a, b = ca[c], cb[c]
+    if px0[b] <= px1[a] and px1[b] >= px0[a] and py0[b] <= py1[a] and py1[b] >= py0[a] then
+      out[2 * n + 1], out[2 * n + 2] = a, b
+      n = n + 1
+    end
+  end
+  local i = 2 * n + 1
+  while out[i] ~= nil do
+    out[i] = nil
+    i = i + 1
+  end
+  return n
+end
+
+--- The proxies whose exact boxes overlap the box (touching counts).
+--- (Moves since the last pairs or query reach the tree first.)
+---@param minx number
+---@param miny number
+---@param maxx number
+---@param maxy number
+---@param out table filled with the ids, ascending; entries past k are cleared
+---@return integer k the number of ids
+function Tree:query(minx, miny, maxx, maxy, out)
+  checkBox('query', minx, miny, maxx, maxy)
+  flush(self)
+  local k = 0
+  if self.root ~= 0 then
+    local c1, c2, proxyOf = self.child1, self.child2, self.proxyOf
+    local x0, y0, x1, y1 = self.nx0, self.ny0, self.nx1, self.ny1
+    local px0, py0, px1, py1 = self.px0, self.py0, self.px1, self.py1
+    local stack, top = self.stack, 1
+    stack[1] = self.root
+    while top > 0 do
+      local n = stack[top]
+      top = top - 1
+      if x0[n] <= maxx and x1[n] >= minx and y0[n] <= maxy and y1[n] >= miny then
+        local a = c1[n]
+        if a == 0 then
+          local id = proxyOf[n]
+          if px0[id] <= maxx and px1[id] >= minx and py0[id] <= maxy and py1[id] >= miny then
+            k = k + 1
+            out[k] = id
+          end
+        else
+          stack[top + 1], stack[top + 2] = a, c2[n]
+          top = top + 2
+        end
+      end
+    end
+    sortRange(out, k)
+  end
+  local i = k + 1
+  while out[i] ~= nil do
+    out[i] = nil
+    i = i + 1
+  end
+  return k
+end
+
+--- The number of proxies.
+---@return integer
+function Tree:count()
+  return self.live
+end
+
+--- The tree's height (0 for one leaf, -1 when empty): for tests and measurements.
+---@return integer
+function Tree:depth()
+  flush(self)
+  return self.root == 0 and -1 or self.height[self.root]
+end
+
+--- The number of candidate pairs (fat boxes overlapping) at the last call of pairs: for
+--- measurements.
+---@return integer
+function Tree:candidates()
+  return self.nCand
+end
+
+return Tree
