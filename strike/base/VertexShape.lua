@@ -437,17 +437,30 @@ function VertexShape:_onSeams(px, py)
   return false
 end
 
--- Insertion sort of the intervals (flat pairs lo, hi) by lo.
-local function sortParts(p)
-  for j = 3, #p - 1, 2 do
-    local lo, hi, m = p[j], p[j + 1], j - 2
-    while m >= 1 and p[m] > lo do
-      p[m + 2], p[m + 3] = p[m], p[m + 1]
+--- (internal) A face's seam from the seam parts found on it: `parts` (nil when none; flat
+--- fractions lo, hi of the face, `np` of them, in any order) on a face `len` long, with the
+--- tolerance `tol` (a length). false when there are none, true when one part covers the
+--- whole face (within tol at both ends), else the parts sorted by their start (as in the
+--- header). Used here and by S.trikers.Concave.
+---@param parts number[]|nil
+---@param np integer
+---@param len number
+---@param tol number
+---@return boolean|number[]
+function VertexShape._seamOf(parts, np, len, tol)
+  if not parts then return false end
+  if np == 2 and parts[1] * len <= tol and (1 - parts[2]) * len <= tol then return true end
+  for j = 3, np - 1, 2 do -- (insertion sort by start)
+    local lo, hi, m = parts[j], parts[j + 1], j - 2
+    while m >= 1 and parts[m] > lo do
+      parts[m + 2], parts[m + 3] = parts[m], parts[m + 1]
       m = m - 2
     end
-    p[m + 2], p[m + 3] = lo, hi
+    parts[m + 2], parts[m + 3] = lo, hi
   end
+  return parts
 end
+local seamOf = VertexShape._seamOf
 
 --- (internal) The `_seams` of this shape (fresh, built) from the seam faces of the shapes it
 --- was made of: `src` holds `count` faces as x1, y1, x2, y2, seam (world coordinates of the
@@ -489,17 +502,8 @@ function VertexShape:_seamsFrom(src, count)
         end
       end
     end
-    if parts then
-      any = true
-      if np == 2 and parts[1] * len <= tol and (1 - parts[2]) * len <= tol then
-        seams[i] = true
-      else
-        sortParts(parts)
-        seams[i] = parts
-      end
-    else
-      seams[i] = false
-    end
+    seams[i] = seamOf(parts, np, len, tol)
+    any = any or parts ~= nil
   end
   return any and seams
 end

@@ -2,6 +2,7 @@
 local ROOT = (...):match('^(.-)%.colliders%.[^%.]+$')
 local Collider = require(ROOT .. '.colliders.Collider')
 local ConvexPolygon = require(ROOT .. '.shapes.ConvexPolygon')
+local seamOf = require(ROOT .. '.base.VertexShape')._seamOf
 local decompose = require(ROOT .. '.geometry.decompose')
 local check = require(ROOT .. '.check')
 local badSelf, type = check.badSelf, type
@@ -77,17 +78,7 @@ local function overlaps(faces, r, near)
       end
     end
   end
-  if not parts then return false end
-  if np == 2 and parts[1] * len <= tol and (1 - parts[2]) * len <= tol then return true end
-  for j = 3, np - 1, 2 do -- (insertion sort by start)
-    local lo, hi, k = parts[j], parts[j + 1], j - 2
-    while k >= 1 and parts[k] > lo do
-      parts[k + 2], parts[k + 3] = parts[k], parts[k + 1]
-      k = k - 2
-    end
-    parts[k + 2], parts[k + 3] = lo, hi
-  end
-  return parts
+  return seamOf(parts, np, len, tol)
 end
 
 -- Candidates for overlaps: near[r] lists the faces (of the m in `faces`) whose extents along
