@@ -458,23 +458,6 @@ function outline.resolve(best, l1, n1, l2, n2)
   return best
 end
 
--- The extent of a member's projection on the unit vector (nx, ny), radius included.
-local function extent(s, nx, ny)
-  local r = s[R]
-  if not s._n then
-    local d = s[X] * nx + s[Y] * ny
-    return d - r, d + r
-  end
-  local lo, hi = huge, -huge
-  for i = 1, s._n do
-    local k = STRIDE * i + BASE
-    local d = s[k] * nx + s[k + VY] * ny
-    if d < lo then lo = d end
-    if d > hi then hi = d end
-  end
-  return lo - r, hi + r
-end
-
 --- Do members a and b (solid, refreshed) touch once b has moved by (tx, ty) (the boundary
 --- of their difference passes through it, within the tolerance of outline.resolve for the
 --- scene size `scale`)? When they do, also returns how deep they overlap along the unit
@@ -499,8 +482,8 @@ function outline.touches(a, b, tx, ty, nx, ny, scale)
   local gap = coreDistance(1, tx, ty) - rad[1]
   memberA[1], memberB[1] = false, false
   if gap > tol or gap < -tol then return false, 0 end
-  local _, hiA = extent(a, nx, ny)
-  local loB = extent(b, nx, ny)
+  local _, hiA = a:project(nx, ny) -- (a rounded shape's and a circle's include their radius)
+  local loB = b:project(nx, ny)
   return true, hiA - loB
 end
 
