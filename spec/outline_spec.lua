@@ -38,6 +38,18 @@ describe('the outline rule', function()
     assert.is_nil(S.ite(m))
   end)
 
+  it('S.ite on a compound MTV against a circle: one point, midway along the push', function()
+    -- the circle (10, 10) r 3 in the L's corner leaves by 13 through x = 0 or y = 0 (a tie):
+    -- its surface is 3 behind its centre along the push, the outline 13 further; the point
+    -- lies midway, 3 - 13 / 2 = -3.5 along the push from the centre, 13 deep
+    local L = T.Concave(0, 0, 100, 0, 100, 20, 20, 20, 20, 100, 0, 100)
+    local m = S.triking(L, H.Circle(10, 10, 3))
+    near(m.depth, 13)
+    local c = S.ite(m)
+    assert.equals(1, c.count)
+    nearList({ c[1].x, c[1].y, c[1].depth }, { 10 + 3.5 * m.nx, 10 + 3.5 * m.ny, 13 })
+  end)
+
   it('a point inside a Concave outline leaves through the outline, never onto a seam', function()
     local L = T.Concave(0, 0, 100, 0, 100, 20, 20, 20, 20, 100, 0, 100)
     for _, p in ipairs({ { 11, 10, 0, -10 }, { 10, 11, -10, 0 }, { 19, 18.5, 1, 1.5 } }) do
