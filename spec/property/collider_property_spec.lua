@@ -109,20 +109,7 @@ describe('collider properties', function()
       local n = rng:int(5, 40)
       local R = gen.logRange(rng, 0.01, 1000)
       local ox, oy = rng:range(-1000, 1000), rng:range(-1000, 1000)
-      local angles
-      repeat
-        angles = {}
-        for i = 1, n do angles[i] = rng:range(0, 2 * pi) end
-        table.sort(angles)
-        -- every angular gap in (1e-3, 0.9 pi): each edge is a chord of its own sector,
-        -- so the outline is simple (a gap of pi or more would let an edge cross others)
-        local gap = 2 * pi - angles[n] + angles[1]
-        local ok = gap > 1e-3 and gap < 0.9 * pi
-        for i = 2, n do
-          gap = angles[i] - angles[i - 1]
-          ok = ok and gap > 1e-3 and gap < 0.9 * pi
-        end
-      until ok
+      local angles = gen.starAngles(rng, n) -- (each edge a chord of its own sector: simple)
       local xs, ys, flat = {}, {}, {}
       local reverse = rng:next() < 0.5
       for i = 1, n do

@@ -99,20 +99,7 @@ end
 -- angles, random radii in [0.2, 1] R), either winding, as S.trikers.Concave.
 local function concaveBody(rng, cx, cy, R, maxN)
   local n = rng:int(4, maxN)
-  local angles
-  repeat
-    angles = {}
-    for i = 1, n do angles[i] = rng:range(0, 2 * pi) end
-    table.sort(angles)
-    -- every angular gap in (1e-3, 0.9 pi): each edge is a chord of its own sector, so the
-    -- outline is simple
-    local gap = 2 * pi - angles[n] + angles[1]
-    local ok = gap > 1e-3 and gap < 0.9 * pi
-    for i = 2, n do
-      gap = angles[i] - angles[i - 1]
-      ok = ok and gap > 1e-3 and gap < 0.9 * pi
-    end
-  until ok
+  local angles = gen.starAngles(rng, n)
   local flat = {}
   local reverse = rng:next() < 0.5
   for i = 1, n do

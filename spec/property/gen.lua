@@ -135,4 +135,24 @@ function gen.show(s)
   return cls .. '(' .. table.concat(parts, ', ') .. ')'
 end
 
+--- n sorted random angles in [0, 2 pi) whose every gap, the wrap-around one included, lies
+--- in (1e-3, 0.9 pi): the vertices of a star-shaped outline at these angles (any radii) make
+--- each edge a chord of its own sector, so the outline is simple (a gap of pi or more would
+--- let an edge cross others). Draws again until the gaps fit.
+function gen.starAngles(rng, n)
+  local angles
+  repeat
+    angles = {}
+    for i = 1, n do angles[i] = rng:range(0, 2 * pi) end
+    table.sort(angles)
+    local gap = 2 * pi - angles[n] + angles[1]
+    local ok = gap > 1e-3 and gap < 0.9 * pi
+    for i = 2, n do
+      gap = angles[i] - angles[i - 1]
+      ok = ok and gap > 1e-3 and gap < 0.9 * pi
+    end
+  until ok
+  return angles
+end
+
 return gen

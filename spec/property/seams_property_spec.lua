@@ -90,18 +90,7 @@ local function star(rng)
   local n = rng:int(5, 30)
   local R = gen.logRange(rng, 0.01, 1000)
   local ox, oy = rng:range(-1000, 1000), rng:range(-1000, 1000)
-  local angles
-  repeat
-    angles = {}
-    for i = 1, n do angles[i] = rng:range(0, 2 * pi) end
-    table.sort(angles)
-    local gap = 2 * pi - angles[n] + angles[1]
-    local ok = gap > 1e-3 and gap < 0.9 * pi
-    for i = 2, n do
-      gap = angles[i] - angles[i - 1]
-      ok = ok and gap > 1e-3 and gap < 0.9 * pi
-    end
-  until ok
+  local angles = gen.starAngles(rng, n)
   local xs, ys = {}, {}
   for i = 1, n do
     local r = R * rng:range(0.2, 1)
