@@ -158,6 +158,18 @@ end
 -- Scratch: one pair's contact points.
 local pairOut = {}
 
+-- The sum over the leaves (refreshed here) of their extent and distance from the origin:
+-- the size of round-off in the contacts' tests.
+local function sizes(list, n)
+  local sum = 0
+  for i = 1, n do
+    local s = list[i]
+    if s._dirty then s:_refresh() end
+    sum = sum + (s[MAXX] - s[MINX]) + (s[MAXY] - s[MINY]) + abs(s[MINX]) + abs(s[MINY])
+  end
+  return sum
+end
+
 --- The contact points of a compound MTV (bodies with more than one leaf between them, and
 --- an answer from solid members; see S.ite): every solid member pair that touches once
 --- the second body has moved by the MTV gives its points (at most 2, from the pair's
@@ -173,18 +185,7 @@ local pairOut = {}
 ---@return integer count
 function compound.contacts(m, l1, n1, l2, n2, out)
   local tx, ty, nx, ny = m.x, m.y, m.nx, m.ny
-  local scale = abs(tx) + abs(ty)
-  for i = 1, n1 do
-    local a = l1[i]
-    if a._dirty then a:_refresh() end
-    scale = scale + (a[MAXX] - a[MINX]) + (a[MAXY] - a[MINY]) + abs(a[MINX]) + abs(a[MINY])
-  end
-  for j = 1, n2 do
-    local b = l2[j]
-    if b._dirty then b:_refresh() end
-    scale = scale + (b[MAXX] - b[MINX]) + (b[MAXY] - b[MINY]) + abs(b[MINX]) + abs(b[MINY])
-  end
-  scale = scale / (n1 + n2)
+  local scale = (abs(tx) + abs(ty) + sizes(l1, n1) + sizes(l2, n2)) / (n1 + n2)
   local count = 0
   for i = 1, n1 do
     local a = l1[i]
