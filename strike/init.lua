@@ -312,4 +312,8 @@ function S.howContacts(contacts, len) drawing().contacts(contacts, len) end
 ---@return number|nil
 function S.howRay(body, x, y, dx, dy, maxDistance) return drawing().ray(body, x, y, dx, dy, maxDistance) end
 
+--- Draw a space (S.pace): its bodies in the current colour and its broadphase's boxes.
+---@param space strike.Space
+function S.howSpace(space) drawing().space(space) end
+
 return S

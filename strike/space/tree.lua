@@ -781,7 +781,12 @@ function Tree:eachNode(fn, ctx)
   if self.root == 0 then return end
   local c1, c2 = self.child1, self.child2
   local x0, y0, x1, y1 = self.nx0, self.ny0, self.nx1, self.ny1
-  local stack, depths, top = self.stack, {}, 1
+  local depths = self.depths
+  if not depths then
+    depths = {}
+    self.depths = depths
+  end
+  local stack, top = self.stack, 1
   stack[1], depths[1] = self.root, 0
   while top > 0 do
     local n, d = stack[top], depths[top]
