@@ -31,7 +31,7 @@ local collide = compound.collide
 local fail, describe, what, badSelf = check.fail, check.describe, check.what, check.badSelf
 local finite = check.finite
 local pairRule, queryFilter, checkQuery = filter.pair, filter.query, filter.checkQuery
-local sqrt, huge, type = math.sqrt, math.huge, type
+local sqrt, huge, abs, type = math.sqrt, math.huge, math.abs, type
 local X, Y = layout.X, layout.Y
 
 -- Pair keys and sort keys pack two numbers below 2^26 into one double.
@@ -648,6 +648,14 @@ local function overlapping(self, probe, filterArg, out)
   return out, k
 end
 
+-- A side of queryRect's rectangle: a length strike accepts (limits.lua).
+local function side(fname, v)
+  if type(v) ~= 'number' or not (v >= limits.MIN_LENGTH and v <= limits.MAX_LENGTH) then
+    fail(('%s: w and h must be numbers from %s to %s, got %s'):format(fname, describe(limits.MIN_LENGTH),
+      describe(limits.MAX_LENGTH), describe(v)))
+  end
+end
+
 --- The bodies overlapping the rectangle with its minimum corner at (x, y), w wide and h
 --- high (as getBbox gives it; touching is not overlapping), exactly, sensors included, in
 --- rank order.
@@ -664,14 +672,10 @@ function Space:queryRect(x, y, w, h, filterArg, out)
   local fname = 'strike.Space:queryRect'
   number(fname, x, 'x')
   number(fname, y, 'y')
-  for _, v in ipairs({ w, h }) do
-    if type(v) ~= 'number' or not (v >= limits.MIN_LENGTH and v <= limits.MAX_LENGTH) then
-      fail(('%s: w and h must be numbers from %s to %s, got %s'):format(fname, describe(limits.MIN_LENGTH),
-        describe(limits.MAX_LENGTH), describe(v)))
-    end
-  end
-  if not finite(x + w) or not finite(y + h) then
-    fail(fname .. ': the rectangle is too far out (x + w, y + h must be finite)')
+  side(fname, w)
+  side(fname, h)
+  if not finite(abs(x) + abs(y) + w + h) then -- (as every shape: |x| + |y| + radius finite)
+    fail(fname .. ': the rectangle is too far out (|x| + |y| + w + h must be finite)')
   end
   checkQuery(filterArg, fname, 5)
   checkOut(fname, out, 6)
