@@ -353,7 +353,12 @@ end
 function W:transform(obj)
   local rng, s = self.rng, self.s
   local r = rng:next()
-  if r < 0.45 then
+  if r < 0.04 then -- far away (and back with a later translateTo)
+    local d = self:side() * logRange(rng, 10, 1e4)
+    local a = rng:range(-pi, pi)
+    obj:translate(d * cos(a), d * sin(a))
+    return 'translate far'
+  elseif r < 0.45 then
     local d = s * logRange(rng, 0.01, 4)
     local a = rng:range(-pi, pi)
     obj:translate(d * cos(a), d * sin(a))
@@ -409,7 +414,13 @@ function W:step(ops)
   local rng = self.rng
   local r = rng:next()
   local e = self:randomEntry()
-  if r < 0.25 and e then
+  if r < 0.25 and #self.pool > 0 and rng:next() < 0.1 then -- a body out of the space: nothing to notice
+    local body = self.pool[rng:int(1, #self.pool)]
+    local what = self:transform(body)
+    self.info[body].exact = false
+    self:note('%s %s', what, self:describe(body))
+    return 'transform out'
+  elseif r < 0.25 and e then
     local what = self:transform(e.body)
     self.info[e.body].exact = false
     self:note('%s %s', what, self:describe(e.body))
