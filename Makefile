@@ -1,10 +1,10 @@
-# strike: make test runs luacheck, the LuaLS annotation check, the copy check, the LÖVE
-# screenshot checks and the busted suite under every Lua VM.
+# strike: make test runs luacheck, the LuaLS annotation check, the copy check, the rockspec
+# check, the LÖVE screenshot checks and the busted suite under every Lua VM.
 VMS ?= lua5.1 lua5.2 lua5.3 lua5.4 luajit
 
-.PHONY: test deps lint annotations annotations-fix spec copy-check love-check bench bench-space demo
+.PHONY: test deps lint annotations annotations-fix spec copy-check rockspec-check love-check bench bench-space demo
 
-test: deps lint annotations copy-check love-check spec
+test: deps lint annotations copy-check rockspec-check love-check spec
 
 # Installs what the checks need (Debian packages) when it is missing and this machine can
 # (root with apt-get); otherwise says exactly what to install.
@@ -41,6 +41,11 @@ love-check:
 # The folder works wherever a game copies it.
 copy-check:
 	@bash tools/copy-check.sh $(VMS)
+
+# strike-scm-1.rockspec: luarocks lint, luarocks make into a temporary tree (offline), the tree
+# holds every file of strike/, and require 'strike' from it works under every VM.
+rockspec-check:
+	@bash tools/rockspec-check.sh $(VMS)
 
 # Benchmarks, not part of test: bench/run.lua under each of BENCH_VMS, tables printed and
 # saved to bench/results/<vm>.csv. STRIKE_PEERS=/path/to/peers adds the peers found there.

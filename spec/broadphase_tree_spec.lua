@@ -1,7 +1,7 @@
 -- The dynamic AABB tree broadphase (bench/broadphase/tree.lua), checked against a brute-force
 -- O(n^2) oracle on seeded random worlds: inserts, small moves, teleports and removes, mixed
 -- sizes (points, 1 px, 2,000 px), near the origin and at 1e9. STRIKE_SEED picks the seed.
-local Tree = require('bench.broadphase.tree')
+local Tree = require('strike.space.tree')
 local PRNG = require('spec.helpers.prng')
 local alloc = require('spec.helpers.alloc')
 

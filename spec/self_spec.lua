@@ -10,6 +10,7 @@ local Shape = require('strike.base.Shape')
 local VertexShape = require('strike.base.VertexShape')
 local ChainSegment = require('strike.base.ChainSegment')
 local MTV = require('strike.collide.MTV')
+local Space = require('strike.space.Space')
 local H, T = S.hapes, S.trikers
 
 local CALL = "call it with ':'"
@@ -177,6 +178,26 @@ local METHODS = {
     setSeparating = { 'mtv', 'strike.MTV:setSeparating' },
     set = { 'mtv', 'strike.MTV:set' },
   } },
+  { 'Space', Space, {
+    new = { 'new', 'strike.Space:new' },
+    add = { 'space', 'strike.Space:add' },
+    set = { 'space', 'strike.Space:set' },
+    get = { 'space', 'strike.Space:get' },
+    remove = { 'space', 'strike.Space:remove' },
+    has = { 'space', 'strike.Space:has' },
+    count = { 'space', 'strike.Space:count' },
+    bodies = { 'space', 'strike.Space:bodies' },
+    setFilter = { 'space', 'strike.Space:setFilter' },
+    on = { 'space', 'strike.Space:on' },
+    off = { 'space', 'strike.Space:off' },
+    collisions = { 'space', 'strike.Space:collisions' },
+    check = { 'space', 'strike.Space:check' },
+    queryPoint = { 'space', 'strike.Space:queryPoint' },
+    queryRect = { 'space', 'strike.Space:queryRect' },
+    queryShape = { 'space', 'strike.Space:queryShape' },
+    rayCast = { 'space', 'strike.Space:rayCast' },
+    rayCastAll = { 'space', 'strike.Space:rayCastAll' },
+  } },
 }
 
 -- Public functions that are no methods, so have no `self` to check.
@@ -208,6 +229,10 @@ local function wrongSelves(need)
   elseif need == 'class' then
     add(shape, 'a shape')
     add(collider, 'a collider')
+  elseif need == 'space' then
+    add(shape, 'a shape')
+    add(collider, 'a collider')
+    add(mtv, 'an MTV')
   elseif need == 'new' then
     add({}, 'a table that is no strike object')
   end

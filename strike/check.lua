@@ -77,6 +77,7 @@ local function describeSelf(v)
   if kind == 'shape' then return 'a shape' end
   if kind == 'collider' then return 'a collider' end
   if kind == 'mtv' then return 'an MTV' end
+  if kind == 'space' then return 'a space' end
   return 'a table that is no strike object'
 end
 

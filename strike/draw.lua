@@ -193,4 +193,31 @@ function draw.ray(body, x, y, dx, dy, maxDistance)
   return t
 end
 
+local function nodeBox(g, x0, y0, x1, y1, _, leaf)
+  if leaf then g.setColor(0.35, 0.8, 1, 0.5) else g.setColor(0.35, 0.8, 1, 0.18) end
+  g.rectangle('line', x0, y0, x1 - x0, y1 - y0)
+end
+
+local listed = {} -- (the bodies of a space being drawn)
+
+local function spaceBodies(g, space, list)
+  local _, n = space:bodies(list)
+  for i = 1, n do eachLeaf(g, list[i], outline, 'line') end
+  for i = 1, n do list[i] = nil end
+end
+
+--- Draw a space: every body in the current colour, then the broadphase's boxes (light blue:
+--- the bodies' fat boxes brighter, the tree's inner boxes fainter).
+---@param space table
+function draw.space(space)
+  local g = graphics('strike.howSpace')
+  if type(space) ~= 'table' or space.type ~= 'space' or getmetatable(space) == nil then
+    check.fail(('strike.howSpace: argument 1 must be a space (S.pace()), got %s'):format(check.what(space)))
+  end
+  spaceBodies(g, space, listed)
+  local r0, g0, b0, a0 = g.getColor()
+  space:_eachNode(nodeBox, g)
+  g.setColor(r0, g0, b0, a0)
+end
+
 return draw

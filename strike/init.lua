@@ -269,6 +269,14 @@ function S.aabb(a, b)
   return ax0 < bx1 and bx0 < ax1 and ay0 < by1 and by0 < ay1
 end
 
+local Space = require(ROOT .. '.space.Space')
+Space._ite = S.ite
+
+--- A new, empty space: a world of colliders and shapes with a broadphase, exact queries,
+--- layers and contact events (strike/space/Space.lua; README, "The space").
+---@return strike.Space
+function S.pace() return Space() end
+
 -- LÖVE debug drawing, in strike/draw.lua, the only file that reads `love`; it is loaded on
 -- the first call, so strike works without LÖVE. Each restores the colour it found.
 local function drawing() return require(ROOT .. '.draw') end
@@ -303,5 +311,9 @@ function S.howContacts(contacts, len) drawing().contacts(contacts, len) end
 ---@param maxDistance number|nil
 ---@return number|nil
 function S.howRay(body, x, y, dx, dy, maxDistance) return drawing().ray(body, x, y, dx, dy, maxDistance) end
+
+--- Draw a space (S.pace): its bodies in the current colour and its broadphase's boxes.
+---@param space strike.Space
+function S.howSpace(space) drawing().space(space) end
 
 return S

@@ -8,7 +8,7 @@
 --- frame, KB per proxy (tree and pair set, after building) and KB allocated per frame (GC
 --- stopped, JIT on), and on LuaJIT the number of trace flushes.
 package.path = './?.lua;' .. package.path
-local Tree = require('bench.broadphase.tree')
+local Tree = require('strike.space.tree')
 local PRNG = require('spec.helpers.prng')
 
 local clock = os.clock

@@ -179,14 +179,29 @@ end
 --- Mark this shape's world-space cache, and every enclosing collider's area, centroid,
 --- bounds and radius, as stale, and stamp the new pose. The walk stops at the first
 --- collider already marked (see the cache protocol in colliders/Collider.lua).
+---
+--- A body in a space (strike/space/Space.lua) hears of it: the walk that reaches the root
+--- queues it there. The walk always reaches the root of a body the space has refreshed
+--- since its last move, since refreshing it cleans every collider in it; when it stops
+--- earlier, the root was already stale, so already queued.
 function Shape:_touch()
   self._dirty = true
   poses = poses + 1
   self._pose = poses
   local p = self.parent
+  if not p then
+    local space = self._space
+    if space then space:_moved(self) end
+    return
+  end
   while p and (p._massOK or p._clean) do
     p._massOK, p._clean = false, false
-    p = p.parent
+    local up = p.parent
+    if not up then
+      local space = p._space
+      if space then space:_moved(p) end
+    end
+    p = up
   end
 end
 
@@ -358,7 +373,8 @@ function Shape:copy(x, y, angle)
   local c = setmetatable({}, getmetatable(self))
   for k = 1, #self do c[k] = self[k] end -- (the array part first, so it stays an array)
   for k, v in pairs(self) do
-    if rawget(c, k) == nil and k ~= 'parent' then c[k] = v end -- (rawget: an own field may shadow the class's)
+    -- (rawget: an own field may shadow the class's; a copy is in no space)
+    if rawget(c, k) == nil and k ~= 'parent' and k ~= '_space' and k ~= '_sid' then c[k] = v end
   end
   -- (local geometry is never changed after construction, so copies share it)
   c._dirty = true

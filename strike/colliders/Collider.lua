@@ -72,12 +72,18 @@ function Collider:new(...)
   self:add(...)
 end
 
--- The structure changed: clear every flag here and on every enclosing collider.
+-- The structure changed: clear every flag here and on every enclosing collider (and, when
+-- the walk reaches a root in a space, queue it there, as Shape:_touch does).
 local function invalidate(self)
   local p = self
   while p and (p._leavesOK or p._massOK or p._clean) do
     p._leavesOK, p._massOK, p._clean, p._single = false, false, false, false
-    p = p.parent
+    local up = p.parent
+    if not up then
+      local space = p._space
+      if space then space:_moved(p) end
+    end
+    p = up
   end
 end
 
@@ -108,6 +114,9 @@ function Collider:add(...)
     end
     if child.parent then
       fail(('strike.Collider:add: argument %d already belongs to a collider; remove it first or add a copy'):format(i))
+    end
+    if rawget(child, '_space') then
+      fail(('strike.Collider:add: argument %d is in a space; remove it from the space first'):format(i))
     end
     for j = 1, i - 1 do
       if select(j, ...) == child then
@@ -567,7 +576,8 @@ function Collider:copy(x, y, angle)
   if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:copy') end
   local c = setmetatable({}, getmetatable(self))
   for k, v in pairs(self) do
-    if k ~= 'parent' and k ~= 'shapes' and k ~= '_leaves' and k ~= '_leafPos' and k ~= '_single' then
+    if k ~= 'parent' and k ~= 'shapes' and k ~= '_leaves' and k ~= '_leafPos' and k ~= '_single' and k ~= '_space'
+      and k ~= '_sid' then
       c[k] = v
     end
   end

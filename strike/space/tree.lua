@@ -1,4 +1,7 @@
---- A dynamic AABB tree broadphase: candidate 1 for the world's broadphase (S.pace).
+--- The broadphase of S.pace (strike/space/Space.lua): a dynamic AABB tree. Chosen over
+--- sort-and-sweep and a hierarchical grid by measurement (bench/broadphase.lua; README,
+--- "The space"): it needs no cell size or bounds, its cost per frame follows the moving
+--- bodies, and it answers box and ray queries in O(log n) besides the pairs.
 ---
 --- Design (ideas from Box2D's b2DynamicTree and broad phase, E. Catto, v2.4 and v3; no
 --- code taken):
@@ -702,6 +705,107 @@ function Tree:query(minx, miny, maxx, maxy, out)
     i = i + 1
   end
   return k
+end
+
+--- Cast a ray through the tree: calls `test(ctx, id, best)` for every proxy whose exact box
+--- the ray from (x, y) along (dx, dy) reaches within [0, best] (best starts at maxT), nearest
+--- boxes first when cheap to tell, and takes the number it returns as the new best (it
+--- returns best unchanged on a miss). Returns the final best. The slab test is the usual
+--- one (Kay and Kajiya, 1986), with a zero direction component handled on its own.
+---@param x number
+---@param y number
+---@param dx number
+---@param dy number
+---@param maxT number
+---@param test fun(ctx: any, id: integer, best: number): number
+---@param ctx any
+---@return number
+function Tree:raycast(x, y, dx, dy, maxT, test, ctx)
+  flush(self)
+  local best = maxT
+  if self.root == 0 then return best end
+  local c1, c2, proxyOf = self.child1, self.child2, self.proxyOf
+  local x0, y0, x1, y1 = self.nx0, self.ny0, self.nx1, self.ny1
+  local px0, py0, px1, py1 = self.px0, self.py0, self.px1, self.py1
+  local ix, iy = 1 / dx, 1 / dy
+  local stack, top = self.stack, 1
+  stack[1] = self.root
+  while top > 0 do
+    local n = stack[top]
+    top = top - 1
+    local a = c1[n]
+    local bx0, by0, bx1, by1
+    if a == 0 then
+      local id = proxyOf[n]
+      bx0, by0, bx1, by1 = px0[id], py0[id], px1[id], py1[id]
+    else
+      bx0, by0, bx1, by1 = x0[n], y0[n], x1[n], y1[n]
+    end
+    local lo, hi = 0, best
+    if dx == 0 then
+      if x < bx0 or x > bx1 then hi = -1 end
+    else
+      local t1, t2 = (bx0 - x) * ix, (bx1 - x) * ix
+      if t1 > t2 then t1, t2 = t2, t1 end
+      if t1 > lo then lo = t1 end
+      if t2 < hi then hi = t2 end
+    end
+    if lo <= hi then
+      if dy == 0 then
+        if y < by0 or y > by1 then hi = -1 end
+      else
+        local t1, t2 = (by0 - y) * iy, (by1 - y) * iy
+        if t1 > t2 then t1, t2 = t2, t1 end
+        if t1 > lo then lo = t1 end
+        if t2 < hi then hi = t2 end
+      end
+      if lo <= hi then
+        if a == 0 then
+          best = test(ctx, proxyOf[n], best)
+        else
+          stack[top + 1], stack[top + 2] = a, c2[n]
+          top = top + 2
+        end
+      end
+    end
+  end
+  return best
+end
+
+--- Visit every node: calls fn(ctx, minx, miny, maxx, maxy, depth, isLeaf) for each (fat boxes
+--- of leaves; unions of inner nodes), for drawing and tests.
+---@param fn fun(ctx: any, minx: number, miny: number, maxx: number, maxy: number, depth: integer, leaf: boolean)
+---@param ctx any
+function Tree:eachNode(fn, ctx)
+  flush(self)
+  if self.root == 0 then return end
+  local c1, c2 = self.child1, self.child2
+  local x0, y0, x1, y1 = self.nx0, self.ny0, self.nx1, self.ny1
+  local depths = self.depths
+  if not depths then
+    depths = {}
+    self.depths = depths
+  end
+  local stack, top = self.stack, 1
+  stack[1], depths[1] = self.root, 0
+  while top > 0 do
+    local n, d = stack[top], depths[top]
+    top = top - 1
+    local a = c1[n]
+    fn(ctx, x0[n], y0[n], x1[n], y1[n], d, a == 0)
+    if a ~= 0 then
+      stack[top + 1], depths[top + 1] = a, d + 1
+      stack[top + 2], depths[top + 2] = c2[n], d + 1
+      top = top + 2
+    end
+  end
+end
+
+--- The exact box of proxy id.
+---@param id integer
+---@return number minx, number miny, number maxx, number maxy
+function Tree:box(id)
+  return self.px0[id], self.py0[id], self.px1[id], self.py1[id]
 end
 
 --- The number of proxies.

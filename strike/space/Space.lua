@@ -1,0 +1,866 @@
+--- S.pace: a world of bodies (colliders and bare shapes) with a broadphase, exact queries,
+--- layers and contact events.
+---
+--- How it keeps up without update calls: a body in a space carries `_space` (the space) and
+--- `_sid` (its proxy id in the broadphase). Every move of a shape ends in Shape:_touch, and
+--- every change of a collider's members in its invalidate; both walk up to the root body
+--- and, when it is in a space, queue its id (Space:_moved), once until the next query. A
+--- query first refreshes the queued bodies' bounds in the broadphase (strike/space/tree.lua,
+--- a dynamic AABB tree whose fat boxes absorb small moves), so bodies that do not move cost
+--- nothing.
+---
+--- Order. A body's rank is the order in which it was added (a body removed and added again
+--- gets a new rank). Every list is in rank order; pairs by (rank of a, rank of b), a added
+--- before b; rayCastAll by distance, then rank.
+---
+--- Per-body data lives in arrays indexed by proxy id (the tree reuses the lowest free id):
+--- the body, its rank, layer, mask, group, sensor flag and whether it is queued.
+local ROOT = (...):match('^(.-)%.space%.[^%.]+$')
+local Object = require(ROOT .. '.class')
+local Tree = require(ROOT .. '.space.tree')
+local filter = require(ROOT .. '.space.filter')
+local compound = require(ROOT .. '.collide.compound')
+local MTV = require(ROOT .. '.collide.MTV')
+local args = require(ROOT .. '.collide.args')
+local check = require(ROOT .. '.check')
+local limits = require(ROOT .. '.limits')
+local layout = require(ROOT .. '.base.layout')
+local Rectangle = require(ROOT .. '.shapes.Rectangle')
+
+local collide = compound.collide
+local fail, describe, what, badSelf = check.fail, check.describe, check.what, check.badSelf
+local finite = check.finite
+local pairRule, queryFilter, checkQuery = filter.pair, filter.query, filter.checkQuery
+local sqrt, huge, abs, type = math.sqrt, math.huge, math.abs, type
+local X, Y = layout.X, layout.Y
+
+-- Pair keys and sort keys pack two numbers below 2^26 into one double.
+local K = 67108864
+
+---@class strike.Space : strike.Object
+local Space = Object:extend()
+Space.type = 'space'
+Space.name = 'Space'
+
+--- S.ite, set by strike/init.lua (the contacts of a record).
+Space._ite = nil
+
+--- A new, empty space.
+function Space:new()
+  if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.Space:new') end
+  self._tree = Tree.new()
+  self._body, self._rank, self._layer, self._mask, self._group, self._sensor = {}, {}, {}, {}, {}, {}
+  self._queued, self._queue, self._nq = {}, {}, 0
+  self._n, self._nextRank = 0, 0
+  self._buf, self._ids = {}, {}
+  -- contact tracking: records by pair key, the touching records of the last call (in
+  -- order) and of this one, and a pool of ended records
+  self._active, self._prev, self._cur, self._pool = {}, {}, {}, {}
+  self._nprev, self._frame = 0, 0
+  self._scratch = MTV()
+  self._on = { begin = {}, stay = {}, ['end'] = {} }
+  self._listeners = 0
+  self._pairFilter = false
+  self._probe = false -- the rectangle of queryRect, made on first use
+end
+
+local function isSpace(v) return type(v) == 'table' and v._tree ~= nil and getmetatable(v) ~= nil end
+
+local function checkOut(fname, out, i)
+  if out ~= nil and (type(out) ~= 'table' or out.type ~= nil) then
+    fail(('%s: argument %d (out) must be a table for the results (a previous result, or {}), got %s')
+      :format(fname, i, what(out)))
+  end
+end
+
+local function isBody(v)
+  return type(v) == 'table' and getmetatable(v) ~= nil and (v.type == 'shape' and args.isShape(v)
+    or v.type == 'collider' and args.isCollider(v))
+end
+
+local function checkBody(fname, v, i)
+  if not isBody(v) then args.badBody(fname, i, v) end
+end
+
+-- The proxy id of a body in this space, or an error.
+local function idOf(self, fname, body)
+  checkBody(fname, body, 1)
+  if rawget(body, '_space') ~= self then
+    fail(('%s: argument 1 (a %s) is not in this space'):format(fname, body.type))
+  end
+  return body._sid
+end
+
+------------------------------------------------------------------ moves
+
+--- Queue a body that moved (called by Shape:_touch and Collider's invalidate on the root).
+---@param body strike.Shape|strike.Collider
+function Space:_moved(body)
+  local id = body._sid
+  local queued = self._queued
+  if not queued[id] then
+    queued[id] = true
+    local n = self._nq + 1
+    self._nq = n
+    self._queue[n] = id
+  end
+end
+
+-- Bring the broadphase up to date with the bodies that moved.
+local function flush(self)
+  local nq = self._nq
+  if nq == 0 then return end
+  local queue, queued, body, tree = self._queue, self._queued, self._body, self._tree
+  for i = 1, nq do
+    local id = queue[i]
+    if queued[id] then
+      queued[id] = false
+      tree:update(id, body[id]:getBounds())
+    end
+  end
+  self._nq = 0
+end
+
+------------------------------------------------------------------ bodies
+
+local OPTIONS = { layer = true, mask = true, group = true, sensor = true }
+
+-- Validate an options table; returns layer, mask, group, sensor, each nil when not given
+-- (mask: a set, or false for `mask = false`: every layer).
+local function options(fname, opts)
+  if opts == nil then return nil, nil, nil, nil end
+  if type(opts) ~= 'table' or getmetatable(opts) ~= nil then
+    fail(('%s: argument 2 (options) must be a table such as {layer = \'wall\'}, got %s'):format(fname, what(opts)))
+  end
+  for k in pairs(opts) do
+    if not OPTIONS[k] then
+      fail(('%s: unknown option %s (options are layer, mask, group and sensor)'):format(fname, describe(k)))
+    end
+  end
+  local layer, mask, group, sensor = opts.layer, opts.mask, opts.group, opts.sensor
+  if layer ~= nil and type(layer) ~= 'string' then
+    fail(('%s: layer must be a layer name (a string), got %s'):format(fname, describe(layer)))
+  end
+  if mask ~= nil and mask ~= false then mask = filter.maskSet(mask, fname) end
+  if group ~= nil and (type(group) ~= 'number' or group % 1 ~= 0 or not finite(group)) then
+    fail(('%s: group must be an integer (0: none; negative: never collide; positive: always), got %s')
+      :format(fname, describe(group)))
+  end
+  if sensor ~= nil and type(sensor) ~= 'boolean' then
+    fail(('%s: sensor must be a boolean, got %s'):format(fname, describe(sensor)))
+  end
+  return layer, mask, group, sensor
+end
+
+-- Give every body a new rank 1..n in its rank order (when ranks would pass K).
+local function renumber(self)
+  local rank, keys, n = self._rank, {}, 0
+  for id = 1, self._tree.idTop do
+    if self._body[id] then
+      n = n + 1
+      keys[n] = rank[id] * K + id
+    end
+  end
+  table.sort(keys)
+  for i = 1, n do rank[keys[i] % K] = i end
+  self._nextRank = n
+end
+
+--- Add a body: a collider, or a shape that no collider holds. Options: `layer` (a name;
+--- default 'default'), `mask` (a list of layer names it collides with; default, or false:
+--- every layer), `group` (an integer: bodies sharing a negative group never collide, a positive
+--- one always), `sensor` (true: reports events, never an MTV).
+---@param body strike.Collider|strike.Shape
+---@param opts table|nil
+---@return strike.Collider|strike.Shape body
+function Space:add(body, opts)
+  if not isSpace(self) then badSelf(self, 'strike.Space:add') end
+  checkBody('strike.Space:add', body, 1)
+  if body.parent then
+    fail(('strike.Space:add: argument 1 (a %s) is held by a collider; add the outermost collider instead')
+      :format(body.type))
+  end
+  local other = rawget(body, '_space')
+  if other == self then fail('strike.Space:add: argument 1 is already in this space') end
+  if other then fail('strike.Space:add: argument 1 is in another space; remove it from that one first') end
+  local layer, mask, group, sensor = options('strike.Space:add', opts)
+  local id = self._tree:insert(body:getBounds())
+  if self._nextRank >= K - 1 then renumber(self) end
+  local r = self._nextRank + 1
+  self._nextRank = r
+  self._body[id], self._rank[id] = body, r
+  self._layer[id], self._mask[id] = layer or filter.DEFAULT, mask or false -- (false: every layer)
+  self._group[id], self._sensor[id] = group or 0, sensor or false
+  self._queued[id] = false
+  body._space, body._sid = self, id
+  self._n = self._n + 1
+  return body
+end
+
+--- Change a body's options (the keys given; the others stay): see Space:add.
+---@param body strike.Collider|strike.Shape
+---@param opts table
+---@return strike.Collider|strike.Shape body
+function Space:set(body, opts)
+  if not isSpace(self) then badSelf(self, 'strike.Space:set') end
+  local id = idOf(self, 'strike.Space:set', body)
+  if opts == nil then
+    fail('strike.Space:set: argument 2 (options) must be a table such as {layer = \'wall\'}, got nil')
+  end
+  local layer, mask, group, sensor = options('strike.Space:set', opts)
+  if layer ~= nil then self._layer[id] = layer end
+  if mask ~= nil then self._mask[id] = mask end
+  if group ~= nil then self._group[id] = group end
+  if sensor ~= nil then self._sensor[id] = sensor end
+  return body
+end
+
+--- A body's options: layer, mask (a new list of names, sorted; nil for every layer), group
+--- and whether it is a sensor.
+---@param body strike.Collider|strike.Shape
+---@return string layer
+---@return string[]|nil mask
+---@return integer group
+---@return boolean sensor
+function Space:get(body)
+  if not isSpace(self) then badSelf(self, 'strike.Space:get') end
+  local id = idOf(self, 'strike.Space:get', body)
+  local set, mask = self._mask[id], nil
+  if set then
+    mask = {}
+    for name in pairs(set) do mask[#mask + 1] = name end
+    table.sort(mask)
+  end
+  return self._layer[id], mask, self._group[id], self._sensor[id]
+end
+
+--- Remove a body. Its touching pairs end at the next collisions() (the 'end' events run then).
+---@param body strike.Collider|strike.Shape
+---@return strike.Collider|strike.Shape body
+function Space:remove(body)
+  if not isSpace(self) then badSelf(self, 'strike.Space:remove') end
+  local id = idOf(self, 'strike.Space:remove', body)
+  self._tree:remove(id)
+  self._body[id], self._rank[id], self._layer[id], self._mask[id] = false, false, false, false
+  self._group[id], self._sensor[id], self._queued[id] = false, false, false
+  body._space, body._sid = false, nil
+  self._n = self._n - 1
+  return body
+end
+
+--- Whether the body is in this space.
+---@param body any
+---@return boolean
+function Space:has(body)
+  if not isSpace(self) then badSelf(self, 'strike.Space:has') end
+  return type(body) == 'table' and rawget(body, '_space') == self
+end
+
+--- The number of bodies.
+---@return integer
+function Space:count()
+  if not isSpace(self) then badSelf(self, 'strike.Space:count') end
+  return self._n
+end
+
+-- Sort ids[1..k] by rank (keys rank * K + id, sorted as numbers: no comparator, no garbage).
+local function byRank(self, ids, k)
+  local rank = self._rank
+  for i = 1, k do
+    local id = ids[i]
+    ids[i] = rank[id] * K + id
+  end
+  table.sort(ids)
+  for i = 1, k do ids[i] = ids[i] % K end
+end
+
+-- Clear list[k + 1 ...].
+local function trim(list, k)
+  local i = k + 1
+  while list[i] ~= nil do
+    list[i] = nil
+    i = i + 1
+  end
+end
+
+--- Every body, in the order they were added (into `out` when given).
+---@param out table|nil
+---@return table list
+---@return integer n
+function Space:bodies(out)
+  if not isSpace(self) then badSelf(self, 'strike.Space:bodies') end
+  checkOut('strike.Space:bodies', out, 1)
+  out = out or {}
+  local body, k = self._body, 0
+  for id = 1, self._tree.idTop do
+    if body[id] then
+      k = k + 1
+      out[k] = id
+    end
+  end
+  byRank(self, out, k)
+  for i = 1, k do out[i] = body[out[i]] end
+  trim(out, k)
+  return out, k
+end
+
+------------------------------------------------------------------ pair rule
+
+--- Set the pair filter: `fn(a, b)` (a added before b) returns true when the pair may
+--- collide; nil removes it. Runs after layers, masks and groups allow the pair.
+---@param fn function|nil
+function Space:setFilter(fn)
+  if not isSpace(self) then badSelf(self, 'strike.Space:setFilter') end
+  if fn ~= nil and type(fn) ~= 'function' then
+    fail(('strike.Space:setFilter: argument 1 must be a function (a, b) -> boolean or nil, got %s'):format(what(fn)))
+  end
+  self._pairFilter = fn or false
+end
+
+-- May proxies i and j (rank i < rank j) collide?
+local function allowed(self, i, j)
+  local layer, mask, group = self._layer, self._mask, self._group
+  if not pairRule(layer[i], mask[i], group[i], layer[j], mask[j], group[j]) then return false end
+  local pf = self._pairFilter
+  return not pf or pf(self._body[i], self._body[j]) and true or false
+end
+
+------------------------------------------------------------------ events
+
+local EVENTS = { begin = true, stay = true, ['end'] = true }
+
+local function checkEvent(fname, event)
+  if not EVENTS[event] then
+    fail(("%s: argument 1 must be 'begin', 'stay' or 'end', got %s"):format(fname, describe(event)))
+  end
+end
+
+--- Call fn(a, b, record) for every pair that begins, stays or ends touching, during
+--- collisions() (see the README for the order). Several callbacks run in the order they were
+--- registered. Returns fn.
+---@param event string 'begin', 'stay' or 'end'
+---@param fn function
+---@return function fn
+function Space:on(event, fn)
+  if not isSpace(self) then badSelf(self, 'strike.Space:on') end
+  checkEvent('strike.Space:on', event)
+  if type(fn) ~= 'function' then
+    fail(('strike.Space:on: argument 2 must be a function (a, b, record), got %s'):format(what(fn)))
+  end
+  local list = self._on[event]
+  list[#list + 1] = fn
+  self._listeners = self._listeners + 1
+  return fn
+end
+
+--- Remove a callback registered with on (its first registration for that event). Returns
+--- true when it was found.
+---@param event string
+---@param fn function
+---@return boolean
+function Space:off(event, fn)
+  if not isSpace(self) then badSelf(self, 'strike.Space:off') end
+  checkEvent('strike.Space:off', event)
+  local list = self._on[event]
+  for i = 1, #list do
+    if list[i] == fn then
+      table.remove(list, i)
+      self._listeners = self._listeners - 1
+      return true
+    end
+  end
+  return false
+end
+
+local function emit(list, rec)
+  for i = 1, #list do list[i](rec.a, rec.b, rec) end
+end
+
+-- A record from the pool, or a new one. Each owns an MTV (`_m`) and a contact list (`_c`).
+local function takeRecord(self)
+  local pool = self._pool
+  local n = #pool
+  if n > 0 then
+    local rec = pool[n]
+    pool[n] = nil
+    return rec
+  end
+  return { a = false, b = false, mtv = false, sensor = false, contacts = nil, _m = MTV(), _c = {}, _key = 0,
+    _frame = 0, _since = 0, _order = 0, _ids = {}, _sa = {}, _sb = {}, _np = 0 }
+end
+
+local function byOrder(r1, r2) return r1._order < r2._order end
+
+-- The record's contacts (S.ite), each point marked `persisted` when the record's previous
+-- contacts had a point with the same id between the same shapes.
+local function contacts(self, rec)
+  local ids, sa, sb, np = rec._ids, rec._sa, rec._sb, 0
+  local c = rec.contacts
+  if c then
+    for i = 1, c.count do
+      local p = c[i]
+      np = np + 1
+      ids[np], sa[np], sb[np] = p.id, p.colliderShape or false, p.collidedShape or false
+    end
+  end
+  c = Space._ite(rec._m, rec._c)
+  rec.contacts = c
+  if c then
+    for i = 1, c.count do
+      local p = c[i]
+      local id, pa, pb, persisted = p.id, p.colliderShape or false, p.collidedShape or false, false
+      for j = 1, np do
+        if ids[j] == id and sa[j] == pa and sb[j] == pb then
+          persisted = true
+          break
+        end
+      end
+      p.persisted = persisted
+    end
+  end
+end
+
+------------------------------------------------------------------ collisions
+
+--- Every colliding pair of solid bodies (neither a sensor) that layers, masks, groups and
+--- the pair filter allow, as records `{a =, b =, mtv =, sensor = false, contacts =}` (a added
+--- before b; mtv as S.triking(a, b), from a toward b), in pair order. The records are the
+--- space's: they are reused by the next call. Also runs the contact events (see on).
+---@param out table|nil
+---@return table list
+---@return integer n
+function Space:collisions(out)
+  if not isSpace(self) then badSelf(self, 'strike.Space:collisions') end
+  checkOut('strike.Space:collisions', out, 1)
+  out = out or {}
+  flush(self)
+  local buf = self._buf
+  local np = self._tree:pairs(buf)
+  local frame = self._frame + 1
+  self._frame = frame
+  local body, rank, sensorOf, active = self._body, self._rank, self._sensor, self._active
+  local cur, ncur, sorted, last = self._cur, 0, true, -1
+  local scratch = self._scratch
+  for p = 1, np do
+    local i, j = buf[2 * p - 1], buf[2 * p]
+    local key = i * K + j
+    if rank[i] > rank[j] then i, j = j, i end
+    if allowed(self, i, j) then
+      local a, b = body[i], body[j]
+      local rec = active[key]
+      if rec and (rec.a ~= a or rec.b ~= b) then rec = nil end -- (a reused id: that one ended)
+      local m = rec and rec._m or scratch
+      if collide(a, b, m) then
+        if not rec then
+          rec = takeRecord(self)
+          rec._m, scratch = scratch, rec._m
+          self._scratch = scratch
+          rec.a, rec.b, rec._key, rec._since, rec.contacts = a, b, key, frame, nil
+          active[key] = rec
+        end
+        local sensor = sensorOf[i] or sensorOf[j]
+        rec.sensor, rec.mtv, rec._frame = sensor, not sensor and rec._m, frame
+        local order = rank[i] * K + rank[j]
+        rec._order = order
+        if order < last then sorted = false end
+        last = order
+        ncur = ncur + 1
+        cur[ncur] = rec
+      end
+    end
+  end
+  trim(cur, ncur)
+  if not sorted then table.sort(cur, byOrder) end
+  -- ends: the previous call's records not touching now (in the previous order)
+  local prev, on, listen = self._prev, self._on, self._listeners > 0
+  local pool = self._pool
+  for p = 1, self._nprev do
+    local rec = prev[p]
+    prev[p] = false
+    if rec._frame ~= frame then
+      if active[rec._key] == rec then active[rec._key] = nil end
+      if listen then emit(on['end'], rec) end
+      rec.a, rec.b, rec.mtv, rec.contacts = false, false, false, nil
+      pool[#pool + 1] = rec
+    end
+  end
+  -- begins and stays, in pair order; the solid ones into out
+  local k = 0
+  for p = 1, ncur do
+    local rec = cur[p]
+    prev[p] = rec
+    if listen then
+      if not rec.sensor then contacts(self, rec) else rec.contacts = nil end
+      emit(rec._since == frame and on.begin or on.stay, rec)
+    end
+    if not rec.sensor then
+      k = k + 1
+      out[k] = rec
+    end
+  end
+  self._nprev = ncur
+  trim(out, k)
+  return out, k
+end
+
+------------------------------------------------------------------ queries
+
+-- The candidates for the box, in rank order, into self._ids; returns the count.
+local function candidates(self, x0, y0, x1, y1)
+  local ids = self._ids
+  local k = self._tree:query(x0, y0, x1, y1, ids)
+  byRank(self, ids, k)
+  return k
+end
+
+-- Take a pair record from out's spares (out._spare) or make one.
+local function outRecord(out, k)
+  local rec = out[k]
+  if type(rec) == 'table' and rec._m then return rec end
+  local spare = out._spare
+  local n = spare and #spare or 0
+  if n > 0 then
+    rec = spare[n]
+    spare[n] = nil
+  else
+    rec = { a = false, b = false, mtv = false, _m = MTV() }
+  end
+  out[k] = rec
+  return rec
+end
+
+-- Move out's records past k to its spares.
+local function trimRecords(out, k)
+  local i = k + 1
+  local rec = out[i]
+  if rec == nil then return end
+  local spare = out._spare
+  if not spare then
+    spare = {}
+    out._spare = spare
+  end
+  while rec ~= nil do
+    if type(rec) == 'table' and rec._m then spare[#spare + 1] = rec end
+    out[i] = nil
+    i = i + 1
+    rec = out[i]
+  end
+end
+
+--- The solid bodies colliding with `body` (in this space or not), as records
+--- `{a = body, b = other, mtv =}` (mtv as S.triking(body, other)) in rank order. For a body
+--- in the space, layers, masks, groups and the pair filter apply, and a sensor collides with
+--- nothing (use queryShape); `filter` applies to the others. Sensors are never included.
+---@param body strike.Collider|strike.Shape
+---@param filterArg function|table|nil
+---@param out table|nil
+---@return table list
+---@return integer n
+function Space:check(body, filterArg, out)
+  if not isSpace(self) then badSelf(self, 'strike.Space:check') end
+  checkBody('strike.Space:check', body, 1)
+  checkQuery(filterArg, 'strike.Space:check', 2)
+  checkOut('strike.Space:check', out, 3)
+  out = out or {}
+  flush(self)
+  local inside = rawget(body, '_space') == self
+  local self_id = inside and body._sid
+  local k = 0
+  if not (inside and self._sensor[self_id]) then
+    local x0, y0, x1, y1
+    if inside then x0, y0, x1, y1 = self._tree:box(self_id) else x0, y0, x1, y1 = body:getBounds() end
+    local ids, bodies, layer, sensor, rank = self._ids, self._body, self._layer, self._sensor, self._rank
+    local n = candidates(self, x0, y0, x1, y1)
+    for c = 1, n do
+      local id = ids[c]
+      local other = bodies[id]
+      if id ~= self_id and not sensor[id] and queryFilter(filterArg, other, layer[id]) then
+        local ok = true
+        if inside then
+          if rank[self_id] < rank[id] then ok = allowed(self, self_id, id) else ok = allowed(self, id, self_id) end
+        end
+        if ok then
+          local rec = outRecord(out, k + 1)
+          if collide(body, other, rec._m) then
+            k = k + 1
+            rec.a, rec.b, rec.mtv = body, other, rec._m
+          end
+        end
+      end
+    end
+  end
+  trimRecords(out, k)
+  return out, k
+end
+
+local function number(fname, v, name)
+  if type(v) ~= 'number' or not finite(v) then
+    fail(('%s: %s must be a finite number, got %s'):format(fname, name, describe(v)))
+  end
+  return v
+end
+
+--- The bodies containing the point (x, y) (as their containsPoint), sensors included, in
+--- rank order.
+---@param x number
+---@param y number
+---@param filterArg function|table|nil
+---@param out table|nil
+---@return table list
+---@return integer n
+function Space:queryPoint(x, y, filterArg, out)
+  if not isSpace(self) then badSelf(self, 'strike.Space:queryPoint') end
+  number('strike.Space:queryPoint', x, 'x')
+  number('strike.Space:queryPoint', y, 'y')
+  checkQuery(filterArg, 'strike.Space:queryPoint', 3)
+  checkOut('strike.Space:queryPoint', out, 4)
+  out = out or {}
+  flush(self)
+  local ids, bodies, layer = self._ids, self._body, self._layer
+  local n, k = candidates(self, x, y, x, y), 0
+  for c = 1, n do
+    local id = ids[c]
+    local b = bodies[id]
+    if queryFilter(filterArg, b, layer[id]) and b:containsPoint(x, y) then
+      k = k + 1
+      out[k] = b
+    end
+  end
+  trim(out, k)
+  return out, k
+end
+
+-- The bodies colliding with `probe` (a shape or collider; skipped itself), as queryShape.
+local function overlapping(self, probe, filterArg, out)
+  flush(self)
+  local x0, y0, x1, y1 = probe:getBounds()
+  local ids, bodies, layer, scratch = self._ids, self._body, self._layer, self._scratch
+  local n, k = candidates(self, x0, y0, x1, y1), 0
+  for c = 1, n do
+    local id = ids[c]
+    local b = bodies[id]
+    if b ~= probe and queryFilter(filterArg, b, layer[id]) and collide(probe, b, scratch) then
+      k = k + 1
+      out[k] = b
+    end
+  end
+  trim(out, k)
+  return out, k
+end
+
+-- A side of queryRect's rectangle: a length strike accepts (limits.lua).
+local function side(fname, v)
+  if type(v) ~= 'number' or not (v >= limits.MIN_LENGTH and v <= limits.MAX_LENGTH) then
+    fail(('%s: w and h must be numbers from %s to %s, got %s'):format(fname, describe(limits.MIN_LENGTH),
+      describe(limits.MAX_LENGTH), describe(v)))
+  end
+end
+
+--- The bodies overlapping the rectangle with its minimum corner at (x, y), w wide and h
+--- high (as getBbox gives it; touching is not overlapping), exactly, sensors included, in
+--- rank order.
+---@param x number
+---@param y number
+---@param w number
+---@param h number
+---@param filterArg function|table|nil
+---@param out table|nil
+---@return table list
+---@return integer n
+function Space:queryRect(x, y, w, h, filterArg, out)
+  if not isSpace(self) then badSelf(self, 'strike.Space:queryRect') end
+  local fname = 'strike.Space:queryRect'
+  number(fname, x, 'x')
+  number(fname, y, 'y')
+  side(fname, w)
+  side(fname, h)
+  if not finite(abs(x) + abs(y) + w + h) then -- (as every shape: |x| + |y| + radius finite)
+    fail(fname .. ': the rectangle is too far out (|x| + |y| + w + h must be finite)')
+  end
+  checkQuery(filterArg, fname, 5)
+  checkOut(fname, out, 6)
+  out = out or {}
+  local probe = self._probe
+  if not probe then
+    probe = Rectangle(0, 0, 1, 1)
+    self._probe = probe
+  end
+  -- (the probe's local geometry set in place: corners at (+-w/2, +-h/2), as the
+  -- constructor lays them out, normals unchanged; then its centre)
+  local hw, hh = w / 2, h / 2
+  local l = probe._l
+  l[1], l[2], l[5], l[6], l[9], l[10], l[13], l[14] = -hw, -hh, hw, -hh, hw, hh, -hw, hh
+  probe.dx, probe.dy, probe._area, probe._radius = w, h, w * h, sqrt(hw * hw + hh * hh)
+  probe[X], probe[Y] = x + hw, y + hh
+  probe:_touch()
+  return overlapping(self, probe, filterArg, out)
+end
+
+--- The bodies colliding with a shape or collider (as S.triking; it need not be in the
+--- space, and is skipped when it is), sensors included, in rank order.
+---@param shape strike.Shape|strike.Collider
+---@param filterArg function|table|nil
+---@param out table|nil
+---@return table list
+---@return integer n
+function Space:queryShape(shape, filterArg, out)
+  if not isSpace(self) then badSelf(self, 'strike.Space:queryShape') end
+  checkBody('strike.Space:queryShape', shape, 1)
+  checkQuery(filterArg, 'strike.Space:queryShape', 2)
+  checkOut('strike.Space:queryShape', out, 3)
+  return overlapping(self, shape, filterArg, out or {})
+end
+
+------------------------------------------------------------------ rays
+
+-- Validate a ray; returns its unit direction and maximum distance.
+local function checkRay(fname, x, y, dx, dy, maxDistance)
+  number(fname, x, 'x')
+  number(fname, y, 'y')
+  number(fname, dx, 'dx')
+  number(fname, dy, 'dy')
+  local ux, uy = limits.unit(dx, dy)
+  if not ux then fail(('%s: the direction (dx, dy) must not be (0, 0)'):format(fname)) end
+  if maxDistance == nil then return ux, uy, huge end
+  if type(maxDistance) ~= 'number' or not (maxDistance >= 0) then -- luacheck: ignore 581 (NaN)
+    fail(('%s: maxDistance must be a number >= 0 or nil, got %s'):format(fname, describe(maxDistance)))
+  end
+  return ux, uy, maxDistance
+end
+
+-- The tree's test for rayCast: the closest hit so far in self._hit*, ties by rank.
+local function closest(self, id, best)
+  local b = self._body[id]
+  if not queryFilter(self._rayFilter, b, self._layer[id]) then return best end
+  local d, hx, hy, nx, ny, shape = b:rayCast(self._rx, self._ry, self._ux, self._uy, best)
+  if d and (d < best or self._hitRank == nil or self._rank[id] < self._hitRank) then
+    self._hitBody, self._hitRank, self._hd, self._hx, self._hy = b, self._rank[id], d, hx, hy
+    self._hnx, self._hny, self._hshape = nx, ny, shape or b
+    return d
+  end
+  return best
+end
+
+--- The closest body the ray from (x, y) along (dx, dy) hits within maxDistance (default
+--- math.huge; dx, dy need not be a unit vector, distances are in units of length): body,
+--- distance, hit point, unit normal and the shape hit; nil when none. Ties go to the body
+--- added first. A ray starting inside a body hits it where it leaves (as body:rayCast).
+---@param x number
+---@param y number
+---@param dx number
+---@param dy number
+---@param maxDistance number|nil
+---@param filterArg function|table|nil
+---@return strike.Collider|strike.Shape|nil body
+---@return number distance
+---@return number x
+---@return number y
+---@return number nx
+---@return number ny
+---@return strike.Shape shape
+function Space:rayCast(x, y, dx, dy, maxDistance, filterArg)
+  if not isSpace(self) then badSelf(self, 'strike.Space:rayCast') end
+  local ux, uy, maxT = checkRay('strike.Space:rayCast', x, y, dx, dy, maxDistance)
+  checkQuery(filterArg, 'strike.Space:rayCast', 6)
+  flush(self)
+  self._rx, self._ry, self._ux, self._uy, self._rayFilter = x, y, ux, uy, filterArg
+  self._hitBody, self._hitRank = nil, nil
+  self._tree:raycast(x, y, ux, uy, maxT, closest, self)
+  local b = self._hitBody
+  self._rayFilter, self._hitBody = nil, nil
+  if not b then return nil end
+  local shape = self._hshape
+  self._hshape = nil
+  return b, self._hd, self._hx, self._hy, self._hnx, self._hny, shape
+end
+
+-- The tree's test for rayCastAll: every hit into self._all.
+local function every(self, id, best)
+  local b = self._body[id]
+  if not queryFilter(self._rayFilter, b, self._layer[id]) then return best end
+  local d, hx, hy, nx, ny, shape = b:rayCast(self._rx, self._ry, self._ux, self._uy, best)
+  if d then
+    local out, k = self._all, self._nall + 1
+    self._nall = k
+    local rec = out[k]
+    if type(rec) ~= 'table' or rec._rank == nil then
+      local spare = out._spare
+      rec = spare and spare[#spare]
+      if rec then spare[#spare] = nil else rec = {} end
+      out[k] = rec
+    end
+    rec.body, rec.distance, rec.x, rec.y, rec.nx, rec.ny, rec.shape = b, d, hx, hy, nx, ny, shape or b
+    rec._rank = self._rank[id]
+  end
+  return best
+end
+
+local function byDistance(r1, r2)
+  local d1, d2 = r1.distance, r2.distance
+  if d1 ~= d2 then return d1 < d2 end
+  return r1._rank < r2._rank
+end
+
+--- Every body the ray hits within maxDistance, once each at its first crossing, as records
+--- `{body =, distance =, x =, y =, nx =, ny =, shape =}` sorted by distance (ties: the body
+--- added first). Records in `out` are reused.
+---@param x number
+---@param y number
+---@param dx number
+---@param dy number
+---@param maxDistance number|nil
+---@param filterArg function|table|nil
+---@param out table|nil
+---@return table list
+---@return integer n
+function Space:rayCastAll(x, y, dx, dy, maxDistance, filterArg, out)
+  if not isSpace(self) then badSelf(self, 'strike.Space:rayCastAll') end
+  local ux, uy, maxT = checkRay('strike.Space:rayCastAll', x, y, dx, dy, maxDistance)
+  checkQuery(filterArg, 'strike.Space:rayCastAll', 6)
+  checkOut('strike.Space:rayCastAll', out, 7)
+  out = out or {}
+  flush(self)
+  self._rx, self._ry, self._ux, self._uy, self._rayFilter = x, y, ux, uy, filterArg
+  self._all, self._nall = out, 0
+  self._tree:raycast(x, y, ux, uy, maxT, every, self)
+  local k = self._nall
+  self._all, self._rayFilter = nil, nil
+  -- (records past k go to the spares; then sort the k)
+  local i = k + 1
+  while out[i] ~= nil do
+    local rec = out[i]
+    if type(rec) == 'table' and rec._rank ~= nil then
+      local spare = out._spare
+      if not spare then
+        spare = {}
+        out._spare = spare
+      end
+      rec.body, rec.shape = nil, nil
+      spare[#spare + 1] = rec
+    end
+    out[i] = nil
+    i = i + 1
+  end
+  local sorted = true
+  for j = 2, k do
+    if byDistance(out[j], out[j - 1]) then
+      sorted = false
+      break
+    end
+  end
+  if not sorted then table.sort(out, byDistance) end
+  return out, k
+end
+
+------------------------------------------------------------------ drawing support
+
+--- Visit the broadphase's boxes: fn(ctx, minx, miny, maxx, maxy, depth, isLeaf) for every
+--- node of its tree (leaves: the bodies' fat boxes). For S.howSpace and tests.
+---@param fn function
+---@param ctx any
+function Space:_eachNode(fn, ctx)
+  flush(self)
+  self._tree:eachNode(fn, ctx)
+end
+
+return Space
