@@ -36,8 +36,9 @@
 ---           over 60 frames after 10.
 ---   memory  bytes per body (collectgarbage('count') before and after, after full
 ---           collections): 20,000 S.trikers.Rectangle colliders, 20,000 bare Rectangles, the
----           mix as colliders and as shapes, and what adding them to a space adds; the peers'
----           bodies and worlds beside them.
+---           mix as colliders and as shapes, what a first getBounds adds (strike fills its
+---           caches on the first query, and adding a body to a space reads its bounds), and
+---           what adding them to a space adds; the peers' bodies and worlds beside them.
 --- --save writes every number to bench/results/space-<vm>.csv.
 package.path = './?.lua;./?/init.lua;' .. package.path
 
@@ -173,11 +174,13 @@ local function runLove(args)
 end
 
 -- LuaJIT trace events during timed frames.
-local flushes, aborts, counting = 0, 0, false
+local flushes, aborts, traces, counting = 0, 0, 0, false
 if jit and jit.attach then
   jit.attach(function(what)
     if counting then
-      if what == 'flush' then flushes = flushes + 1 elseif what == 'abort' then aborts = aborts + 1 end
+      if what == 'flush' then flushes = flushes + 1
+      elseif what == 'abort' then aborts = aborts + 1
+      elseif what == 'stop' then traces = traces + 1 end
     end
   end, 'trace')
 end
@@ -265,18 +268,21 @@ local function runFrames(lib, n)
   end
   counting = false
   local fl, ab = flushes, aborts
-  -- allocation: the second and third of three frames with the GC stopped
+  -- allocation: the second and third of three frames with the GC stopped (LuaJIT: a trace
+  -- is a GC object, so traces compiled in those frames count too; they are counted)
   fullGC()
   collectgarbage('stop')
   frame(lib, st, w)
   local kb0 = collectgarbage('count')
+  traces, counting = 0, true
   frame(lib, st, w)
   frame(lib, st, w)
+  counting = false
   local kb = (collectgarbage('count') - kb0) / 2
   collectgarbage('restart')
   local med, mn = SW.medianMin(times)
   return { n = n, lib = lib.name, frames = timed, warm = warm, median = med, min = mn, kb = kb, pairs = count,
-    flushes = jit and fl, aborts = jit and ab, build = buildMs }
+    flushes = jit and fl, aborts = jit and ab, kbTraces = jit and traces, build = buildMs }
 end
 
 if opts.sections.frame then
@@ -586,19 +592,25 @@ if opts.sections.memory then
     note(('  memory %-60s %7.0f bytes/body'):format(what, b))
   end
   local okS, S = pcall(require, 'strike')
+  local function bounds(keep)
+    for i = 1, n do keep[i]:getBounds() end
+  end
   if okS and (wanted('strike') or wanted('strike-shapes')) then
-    row('S.trikers.Rectangle(x, y, 16, 12)', bytes(function(keep)
-      for i = 1, n do keep[i] = S.trikers.Rectangle(w.x[i], w.y[i], 16, 12) end
-    end))
-    row('S.hapes.Rectangle(x, y, 16, 12)', bytes(function(keep)
-      for i = 1, n do keep[i] = S.hapes.Rectangle(w.x[i], w.y[i], 16, 12) end
-    end))
+    local kinds = { { 'S.trikers.Rectangle', S.trikers.Rectangle }, { 'S.hapes.Rectangle', S.hapes.Rectangle } }
+    for _, c in ipairs(kinds) do
+      local keep = {}
+      row(c[1] .. '(x, y, 16, 12), built', bytes(function(k)
+        for i = 1, n do k[i] = c[2](w.x[i], w.y[i], 16, 12) end
+      end, keep))
+      row(c[1] .. ': more after a first getBounds', bytes(bounds, keep))
+    end
   end
   for _, lib in ipairs(libs) do
     local keep = {}
     row(lib.name .. ': the mix, built', bytes(function(k)
       for i = 1, n do k[i] = lib.make(w, i) end
     end, keep))
+    if lib.name:match('^strike') then row(lib.name .. ': more after a first getBounds', bytes(bounds, keep)) end
     local st
     row(lib.name .. ': added to a world (world + per-body cost)', bytes(function()
       st = lib.new()
@@ -649,8 +661,10 @@ if opts.sections.frame then
         put('frame', r.lib, r.n, 'trace_flushes', fl)
         put('frame', r.lib, r.n, 'trace_aborts', r.loveAborts or r.aborts)
       end
+      if r.kbTraces then put('frame', r.lib, r.n, 'traces_in_kb_frames', r.kbTraces) end
       rows[#rows + 1] = { tostring(r.n), r.lib, ('%d (+%d)'):format(r.frames, r.warm), fmt(r.median), fmt(r.min),
-        fmt(r.kb, 1), (fmt(r.pairs, 1):gsub('%.0$', '')), fl and tostring(fl) or '—',
+        fmt(r.kb, 1) .. ((r.kbTraces and r.kbTraces > 0) and (' (%d traces)'):format(r.kbTraces) or ''),
+        (fmt(r.pairs, 1):gsub('%.0$', '')), fl and tostring(fl) or '—',
         fl and tostring(r.loveAborts or r.aborts) or '—', fmt(r.build, 1) }
     end
   end
@@ -707,7 +721,11 @@ if opts.sections.frame then
       c.ok and ('%d pairs, the same pairs in the same order with the same MTVs'):format(c.pairs)
       or ('MISMATCH: ' .. tostring(c.why))))
   end
-  if jit then print('Trace flushes/aborts: LuaJIT events during the timed frames (box2d: inside LÖVE).') end
+  if jit then
+    print('Trace flushes/aborts: LuaJIT events during the timed frames (box2d: inside LÖVE). KB/frame: '
+      .. '(n traces) = n traces were compiled during the two measured frames, and a trace is a GC object.')
+  end
+  if not jit and love then print('box2d runs in LÖVE, under its LuaJIT, whatever the VM here.') end
   print()
 end
 
