@@ -39,7 +39,8 @@
 ---           mix as colliders and as shapes, what a first getBounds adds (strike fills its
 ---           caches on the first query, and adding a body to a space reads its bounds), and
 ---           what adding them to a space adds; the peers' bodies and worlds beside them.
---- --save writes every number to bench/results/space-<vm>.csv.
+--- --save writes every number to bench/results/space-<vm>.csv. The run fails (exit status 1,
+--- after the tables) when strike's pairs or rays disagree with the brute force.
 package.path = './?.lua;./?/init.lua;' .. package.path
 
 local SW = require('bench.spaceworld')
@@ -786,6 +787,16 @@ if opts.sections.memory then
   tableOut({ 'what', 'bytes/body' }, rows)
 end
 
+-- strike's answers that disagree with the brute force fail the run (after the tables).
+local failed = {}
+for _, c in ipairs(checks) do
+  if not c.ok then failed[#failed + 1] = ('%s pairs after %d frames'):format(c.lib, c.at) end
+end
+for _, r in ipairs(rayRows) do
+  if r.lib:match('^strike') and (r.err or (r.checked and r.correct < r.total)) then
+    failed[#failed + 1] = r.lib .. ' rays'
+  end
+end
 if #skipped > 0 then print('skipped: ' .. table.concat(skipped, '; ')) end
 print(('(%d s in all)'):format(os.time() - t00))
 
@@ -798,4 +809,8 @@ if opts.save then
   end
   f:close()
   print('saved ' .. path)
+end
+if #failed > 0 then
+  print('FAILED (strike disagrees with the brute force): ' .. table.concat(failed, ', '))
+  os.exit(1)
 end
