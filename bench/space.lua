@@ -32,8 +32,8 @@
 ---   build   constructing the 20,000 bodies of the mix, and adding them to a world (best of 3).
 ---   churn   a 1,000-body world (not moving) and 100 bullets (circles of radius 2): each frame
 ---           removes the 100 bullets, builds 100 new ones at new places and adds them, then
----           finds every colliding pair; ms per frame for the churn and for the pairs, medians
----           over 60 frames after 10.
+---           finds every colliding pair; ms per frame for each of the four steps, medians over
+---           60 frames after 10.
 ---   memory  bytes per body (collectgarbage('count') before and after, after full
 ---           collections): 20,000 S.trikers.Rectangle colliders, 20,000 bare Rectangles, the
 ---           mix as colliders and as shapes, what a first getBounds adds (strike fills its
@@ -513,56 +513,69 @@ end
 
 ---------------------------------------------------------------------------------------------
 -- Churn.
-local churnRows = {} -- { lib =, churn =, pairs =, frame =, kb =, count = }
+local churnRows = {} -- { lib =, remove =, build =, add =, pairs =, frame =, kb =, count = } (ms, medians)
 if opts.sections.churn then
   local w = SW.world(CHURN_N, SW.seed(CHURN_N))
-  local total = CHURN_WARM + CHURN_FRAMES + 3
-  local B = SW.bullets(CHURN_BULLETS * (total + 1), w.side, SW.seed(CHURN_N) + 2)
+  local total = CHURN_WARM + CHURN_FRAMES + 4
+  local B = SW.bullets(CHURN_BULLETS * total, w.side, SW.seed(CHURN_N) + 2)
   for _, lib in ipairs(libs) do
     local ok, err = pcall(function()
       local st = lib.build(w)
-      local live, next = {}, 1
-      local function spawn()
-        for k = 1, CHURN_BULLETS do
-          local b = lib.bullet(B.x[next], B.y[next])
-          next = next + 1
-          lib.add(st, b, w.n + k)
-          live[k] = b
-        end
-      end
-      local function churn()
-        for k = 1, CHURN_BULLETS do lib.remove(st, live[k]) end
-        spawn()
-      end
-      spawn()
-      lib.collide(st)
-      for _ = 1, CHURN_WARM do churn(); lib.collide(st) end
-      fullGC()
-      local tc, tp, tf, count = {}, {}, {}, 0
-      for f = 1, CHURN_FRAMES do
+      local live, fresh, next = {}, {}, 1
+      local bullet, add, remove, collide = lib.bullet, lib.add, lib.remove, lib.collide
+      local n0 = w.n
+      -- One frame: remove the live bullets, build new ones, add them, find the pairs; the
+      -- four times (s) and the pair count.
+      local function churnFrame()
         local t0 = clock()
-        churn()
+        for k = 1, CHURN_BULLETS do remove(st, live[k]) end
         local t1 = clock()
-        count = lib.collide(st)
+        for k = 1, CHURN_BULLETS do
+          fresh[k] = bullet(B.x[next], B.y[next])
+          next = next + 1
+        end
         local t2 = clock()
-        tc[f], tp[f], tf[f] = (t1 - t0) * 1000, (t2 - t1) * 1000, (t2 - t0) * 1000
+        for k = 1, CHURN_BULLETS do
+          add(st, fresh[k], n0 + k)
+          live[k] = fresh[k]
+        end
+        local t3 = clock()
+        local count = collide(st)
+        return t1 - t0, t2 - t1, t3 - t2, clock() - t3, count
+      end
+      for k = 1, CHURN_BULLETS do
+        live[k] = bullet(B.x[next], B.y[next])
+        next = next + 1
+        add(st, live[k], n0 + k)
+      end
+      collide(st)
+      for _ = 1, CHURN_WARM do churnFrame() end
+      fullGC()
+      local tr, tb, ta, tra, tp, tf, count = {}, {}, {}, {}, {}, {}, 0
+      for f = 1, CHURN_FRAMES do
+        local r1, b1, a1, p1
+        r1, b1, a1, p1, count = churnFrame()
+        tr[f], tb[f], ta[f], tra[f] = r1 * 1000, b1 * 1000, a1 * 1000, (r1 + a1) * 1000
+        tp[f], tf[f] = p1 * 1000, (r1 + b1 + a1 + p1) * 1000
       end
       fullGC()
       collectgarbage('stop')
-      churn(); lib.collide(st)
+      churnFrame()
       local kb0 = collectgarbage('count')
-      churn(); lib.collide(st)
-      churn(); lib.collide(st)
+      churnFrame()
+      churnFrame()
       local kb = (collectgarbage('count') - kb0) / 2
       collectgarbage('restart')
-      local r = { lib = lib.name, churn = (SW.medianMin(tc)), pairs = (SW.medianMin(tp)), frame = (SW.medianMin(tf)),
-        kb = kb, count = count }
+      local r = { lib = lib.name, remove = (SW.medianMin(tr)), build = (SW.medianMin(tb)), add = (SW.medianMin(ta)),
+        removeAdd = (SW.medianMin(tra)), pairs = (SW.medianMin(tp)), frame = (SW.medianMin(tf)), kb = kb,
+        count = count }
       churnRows[#churnRows + 1] = r
-      put('churn', lib.name, CHURN_N, 'churn_ms', r.churn)
-      put('churn', lib.name, CHURN_N, 'pairs_ms', r.pairs)
-      put('churn', lib.name, CHURN_N, 'frame_ms', r.frame)
+      for _, m in ipairs({ 'remove', 'build', 'add', 'removeAdd', 'pairs', 'frame' }) do
+        put('churn', lib.name, CHURN_N, m .. '_ms', r[m])
+      end
       put('churn', lib.name, CHURN_N, 'kb_per_frame', kb)
-      note(('  churn %-13s churn %.3f ms + pairs %.3f ms, %.1f KB/frame'):format(lib.name, r.churn, r.pairs, kb))
+      note(('  churn %-13s remove %.3f + build %.3f + add %.3f + pairs %.3f ms, %.1f KB/frame'):format(lib.name,
+        r.remove, r.build, r.add, r.pairs, kb))
     end)
     if not ok then churnRows[#churnRows + 1] = { lib = lib.name, err = tostring(err) } end
     fullGC()
@@ -767,17 +780,20 @@ if opts.sections.build then
 end
 
 if opts.sections.churn then
-  print(('Churn: %d static bodies; each frame %d bullets removed, %d new ones built and added, then every pair '
-    .. '(ms, median of %d frames)'):format(CHURN_N, CHURN_BULLETS, CHURN_BULLETS, CHURN_FRAMES))
+  print(('Churn: %d static bodies; each frame the %d bullets (circles of radius 2) removed, %d new ones built '
+    .. 'and added, then every pair (ms, medians of %d frames; KB/frame includes building the bullets)')
+    :format(CHURN_N, CHURN_BULLETS, CHURN_BULLETS, CHURN_FRAMES))
   local rows = {}
   for _, r in ipairs(churnRows) do
-    if r.err then rows[#rows + 1] = { r.lib, 'ERROR', r.err, '', '', '' }
+    if r.err then rows[#rows + 1] = { r.lib, 'ERROR', r.err, '', '', '', '', '', '' }
     else
-      rows[#rows + 1] = { r.lib, fmt(r.churn, 3), fmt(r.pairs, 3), fmt(r.frame, 3), fmt(r.kb, 1),
+      rows[#rows + 1] = { r.lib, fmt(r.remove, 3), fmt(r.build, 3), fmt(r.add, 3),
+        fmt(r.removeAdd, 3), fmt(r.pairs, 3), fmt(r.frame, 3), fmt(r.kb, 1),
         (fmt(r.count, 1):gsub('%.0$', '')) }
     end
   end
-  tableOut({ 'library', 'remove + build + add ms', 'pairs ms', 'frame ms', 'KB/frame', 'pairs' }, rows)
+  tableOut({ 'library', 'remove 100 ms', 'build 100 ms', 'add 100 ms', 'remove + add ms', 'pairs ms', 'frame ms',
+    'KB/frame', 'pairs' }, rows)
 end
 
 if opts.sections.memory then
