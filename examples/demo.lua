@@ -51,7 +51,11 @@ local function bodySVG(out, body, colour)
       local v, n = s:getVertices()
       local pts = {}
       for i = 1, n do pts[i] = fmt(v[2 * i - 1]) .. ',' .. fmt(v[2 * i]) end
-      if n == 2 then
+      local r = s.getRounding and s:getRounding() or 0
+      if n == 2 and r > 0 then -- a capsule: its core segment swept by a disc of radius r
+        out[#out + 1] = ('<polyline class="shape" points="%s" fill="none" stroke="%s" stroke-opacity="0.35"'
+          .. ' stroke-width="%s" stroke-linecap="round"/>'):format(table.concat(pts, ' '), colour, fmt(2 * r))
+      elseif n == 2 then
         out[#out + 1] = ('<polyline class="shape" points="%s" fill="none" stroke="%s" stroke-width="3"/>')
           :format(table.concat(pts, ' '), colour)
       else
