@@ -67,8 +67,8 @@ bench-space:
 
 # `make demo`: the interactive LÖVE demo (love demo) where LÖVE and a display are present;
 # otherwise, or with HEADLESS=1, the headless example (plain Lua, any VM): a scene's
-# collisions, MTVs, contact points and a ray cast as a table, and a picture of it as SVG
-# (DEMO_SVG=path, default strike-demo.svg).
+# collisions, MTVs and contact points, a rectangle query and a ray cast through an S.pace, as
+# a table, and a picture of it as SVG (DEMO_SVG=path, default strike-demo.svg).
 DEMO_LUA ?= $(firstword $(foreach vm,luajit lua5.4 lua5.3 lua5.2 lua5.1 lua,$(shell command -v $(vm) 2>/dev/null)))
 DEMO_SVG ?= strike-demo.svg
 HEADLESS ?=
