@@ -133,24 +133,26 @@ if wanted('box2d') then
   local p = io.popen('command -v love 2>/dev/null')
   local path = p and p:read('*l')
   if p then p:close() end
-  if path and path ~= '' then love = { cmd = 'love' } else skipped[#skipped + 1] = 'box2d (no love on the PATH)' end
+  if path and path ~= '' then love = true else skipped[#skipped + 1] = 'box2d (no love on the PATH)' end
 end
 
 -- Runs the LÖVE program for one section; its `box2d ...` lines as records
--- { kind =, key = value ... } (numbers converted), or nil and the reason.
+-- { kind =, key = value ... } (numbers converted), or nil and the reason. When LÖVE does
+-- not start (no `box2d version` line), tries once more under xvfb-run.
 local function runLove(args)
   local function try(prefix)
-    local cmd = prefix .. 'love bench/lovephysics ' .. args .. ' 2>&1'
-    local p = io.popen(cmd)
-    if not p then return nil, 'io.popen failed' end
-    local recs, other, err = {}, {}, nil
+    local p = io.popen(prefix .. 'love bench/lovephysics ' .. args .. ' 2>&1')
+    if not p then return nil, 'io.popen failed', false end
+    local recs, other, err, started = {}, {}, nil, false
     for line in p:lines() do
       local kind, rest = line:match('^box2d (%S+)%s*(.*)$')
       if kind == 'rayhit' then
         local k, i, d = rest:match('^(%d+) (%d+) (%S+)$')
         recs[#recs + 1] = { kind = kind, ray = tonumber(k), body = tonumber(i), d = tonumber(d) }
       elseif kind == 'error' then
-        err = rest
+        err = 'LÖVE program: ' .. rest
+      elseif kind == 'version' then
+        started = true
       elseif kind then
         local r = { kind = kind }
         for key, v in rest:gmatch('(%w+)=(%S+)') do r[key] = tonumber(v) or v end
@@ -160,16 +162,20 @@ local function runLove(args)
       end
     end
     p:close()
-    if err then return nil, err end
-    local any = false
-    for _, r in ipairs(recs) do if r.kind ~= 'version' then any = true end end
-    if not any then return nil, table.concat(other, ' / ') end
-    return recs
+    if err then return nil, err, started end
+    if #recs == 0 then return nil, table.concat(other, ' / '), started end
+    return recs, nil, started
   end
-  local recs, err = try('')
-  if not recs and not err:match('^box2d') then
-    local r2 = try('xvfb-run -a ')
-    if r2 then return r2 end
+  local recs, err, started = try('')
+  if not started then
+    local p = io.popen('command -v xvfb-run 2>/dev/null')
+    local xvfb = p and p:read('*l')
+    if p then p:close() end
+    if xvfb and xvfb ~= '' then
+      local recs2, err2 = try('xvfb-run -a ')
+      if recs2 then return recs2 end
+      err = err .. ' / under xvfb-run: ' .. tostring(err2)
+    end
   end
   return recs, err
 end
@@ -195,6 +201,13 @@ end
 local function fullGC()
   collectgarbage('collect')
   collectgarbage('collect')
+end
+
+-- Before each library's run of a section: no garbage and, on LuaJIT, no traces left from
+-- the one before.
+local function fresh()
+  fullGC()
+  if jit then jit.flush() end
 end
 
 local step = SW.step
@@ -370,6 +383,7 @@ if opts.sections.rays then
         if record then bI[k], bD[k], inside[k] = best, best and bestD, ins end
       end
     end
+    fresh()
     brute(true)
     local t0 = clock()
     brute(false)
@@ -434,6 +448,7 @@ if opts.sections.rays then
       row.checked and ('  %.2f %% correct'):format(100 * row.correct / row.total) or ''))
   end
   for _, lib in ipairs(libs) do
+    fresh()
     local ok, err = pcall(function()
       local st = lib.build(w)
       local ray = lib.ray
@@ -477,6 +492,7 @@ local buildRows = {} -- { lib =, make =, add =, total = } (ms)
 if opts.sections.build then
   local w = SW.world(BUILD_N, SW.seed(BUILD_N))
   for _, lib in ipairs(libs) do
+    fresh()
     local ok, err = pcall(function()
       local bm, ba, bt = huge, huge, huge
       for _ = 1, 3 do
@@ -519,9 +535,10 @@ if opts.sections.churn then
   local total = CHURN_WARM + CHURN_FRAMES + 4
   local B = SW.bullets(CHURN_BULLETS * total, w.side, SW.seed(CHURN_N) + 2)
   for _, lib in ipairs(libs) do
+    fresh()
     local ok, err = pcall(function()
       local st = lib.build(w)
-      local live, fresh, next = {}, {}, 1
+      local live, made, next = {}, {}, 1
       local bullet, add, remove, collide = lib.bullet, lib.add, lib.remove, lib.collide
       local n0 = w.n
       -- One frame: remove the live bullets, build new ones, add them, find the pairs; the
@@ -531,13 +548,13 @@ if opts.sections.churn then
         for k = 1, CHURN_BULLETS do remove(st, live[k]) end
         local t1 = clock()
         for k = 1, CHURN_BULLETS do
-          fresh[k] = bullet(B.x[next], B.y[next])
+          made[k] = bullet(B.x[next], B.y[next])
           next = next + 1
         end
         local t2 = clock()
         for k = 1, CHURN_BULLETS do
-          add(st, fresh[k], n0 + k)
-          live[k] = fresh[k]
+          add(st, made[k], n0 + k)
+          live[k] = made[k]
         end
         local t3 = clock()
         local count = collide(st)
