@@ -14,7 +14,7 @@
 ---           circles of radius 4-12) in a square of side 40 sqrt(N), each moving 0.5-2 px a
 ---           frame and bouncing off the border. A frame = move every body + every colliding
 ---           pair (strike: space:collisions(out)). ms per frame (median and min over the timed
----           frames, os.clock, after warm-up frames; --frames F times F frames up to N = 5,000
+---           frames, os.clock, the GC running as usual, after warm-up frames; --frames F times F frames up to N = 5,000
 ---           and F * 5000 / N (at least 5) above), KB allocated per frame (two frames with the
 ---           GC stopped, after one), the pairs found in the last timed frame, LuaJIT trace
 ---           flushes and aborts during the timed frames (jit.attach; the trace cache is flushed
