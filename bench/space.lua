@@ -14,11 +14,13 @@
 ---           circles of radius 4-12) in a square of side 40 sqrt(N), each moving 0.5-2 px a
 ---           frame and bouncing off the border. A frame = move every body + every colliding
 ---           pair (strike: space:collisions(out)). ms per frame (median and min over the timed
----           frames, os.clock, the GC running as usual, after warm-up frames; --frames F times F frames up to N = 5,000
----           and F * 5000 / N (at least 5) above), KB allocated per frame (two frames with the
----           GC stopped, after one), the pairs found in the last timed frame, LuaJIT trace
----           flushes and aborts during the timed frames (jit.attach; the trace cache is flushed
----           before each library's world is built), and the time to build and add the world.
+---           frames, os.clock, the GC running as usual, after warm-up frames; --frames F times
+---           F frames up to N = 5,000 and F * 5000 / N (at least 5) above), KB allocated per
+---           frame (two frames with the GC stopped, after one; on LuaJIT with the count of
+---           traces compiled in them, since a trace is a GC object), the pairs found in the
+---           last timed frame, LuaJIT trace flushes and aborts during the timed frames
+---           (jit.attach; the trace cache is flushed after each library's world is built,
+---           before its frames), and the time to build and add the world.
 ---           HC is run up to --hc-max bodies (default 20,000: it takes seconds a frame above).
 ---           strike's pairs are checked once against a brute force (S.triking on every pair of
 ---           bodies, in add order) on the 1,000-body world, before any frame and after 30.
