@@ -7,3 +7,5 @@ files['.busted'] = { std = 'min' }
 exclude_files = { '.git' }
 -- The LÖVE demo (love demo): LÖVE's globals, and only its callbacks defined.
 files['demo/'] = { std = 'min+love' }
+-- bench/lovephysics: a LÖVE program (Box2D through love.physics) that bench/space.lua runs.
+files['bench/lovephysics/'] = { std = 'min+love' }

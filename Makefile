@@ -2,7 +2,7 @@
 # check, the LÖVE screenshot checks and the busted suite under every Lua VM.
 VMS ?= lua5.1 lua5.2 lua5.3 lua5.4 luajit
 
-.PHONY: test deps lint annotations annotations-fix spec copy-check rockspec-check love-check bench demo
+.PHONY: test deps lint annotations annotations-fix spec copy-check rockspec-check love-check bench bench-space demo
 
 test: deps lint annotations copy-check rockspec-check love-check spec
 
@@ -54,10 +54,21 @@ BENCH_VMS ?= luajit lua5.4
 bench:
 	@BENCH_VMS="$(BENCH_VMS)" bash bench/bench.sh
 
+# bench/space.lua under each of BENCH_VMS in turn: S.pace on issue 11's world workloads (frames,
+# rays, build + add, churn, memory) beside HC and bump (STRIKE_PEERS) and Box2D through LÖVE
+# (when love is on the PATH); tables printed and saved to bench/results/space-<vm>.csv.
+# SPACE_ARGS="--n 1000,5000 --frames 30" for a shorter run.
+SPACE_ARGS ?=
+
+bench-space:
+	@status=0; for vm in $(BENCH_VMS); do \
+	  echo "== bench/space.lua under $$vm"; $$vm bench/space.lua --save $(SPACE_ARGS) || status=1; echo; \
+	done; exit $$status
+
 # `make demo`: the interactive LÖVE demo (love demo) where LÖVE and a display are present;
 # otherwise, or with HEADLESS=1, the headless example (plain Lua, any VM): a scene's
-# collisions, MTVs, contact points and a ray cast as a table, and a picture of it as SVG
-# (DEMO_SVG=path, default strike-demo.svg).
+# collisions, MTVs and contact points, a rectangle query and a ray cast through an S.pace, as
+# a table, and a picture of it as SVG (DEMO_SVG=path, default strike-demo.svg).
 DEMO_LUA ?= $(firstword $(foreach vm,luajit lua5.4 lua5.3 lua5.2 lua5.1 lua,$(shell command -v $(vm) 2>/dev/null)))
 DEMO_SVG ?= strike-demo.svg
 HEADLESS ?=

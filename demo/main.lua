@@ -6,11 +6,13 @@
 ---   love demo --frames N           quit by itself (exit code 0) after N frames, printing the
 ---                                  scene's status lines (smoke tests, timings)
 ---   love demo --screenshot out.png --scene N
----                                  draw scene N's initial state (the state its `new`
----                                  returns, no update step, help shown) to an 800x600
----                                  canvas, write it as a PNG to out.png (a relative path is
----                                  relative to the current directory) and quit with exit
----                                  code 0; on any error, a message on stderr and exit code 1
+---                                  draw scene N's scripted frame (the state its `new`
+---                                  returns, then the scene's SHOT_FRAMES updates of 1/60 s
+---                                  if it has any: util/scene.lua, advance; help shown) to an
+---                                  800x600 canvas, write it as a PNG to out.png (a relative
+---                                  path is relative to the current directory), print the
+---                                  status lines and quit with exit code 0; on any error, a
+---                                  message on stderr and exit code 1
 ---
 --- Unknown arguments are ignored. The scenes live in scenes/ (one module each, listed in
 --- scenes/list.lua) and build their state without LÖVE, so the specs can test them in
@@ -23,6 +25,7 @@ package.path = source .. '/../?.lua;' .. source .. '/../?/init.lua;' .. package.
 
 local S = require('strike')
 local layout = require('util.layout')
+local sceneUtil = require('util.scene')
 local scenes = require('scenes.list')
 
 local W, H = layout.WIDTH, layout.HEIGHT
@@ -31,6 +34,7 @@ local current = { index = 1, scene = nil, state = nil }
 local showHelp = true
 local quitting = false
 local frameLimit, frames = nil, 0
+local shotFrame = nil -- in --screenshot mode, the number of the frame drawn (no FPS to show)
 
 local function setColour(rgb) love.graphics.setColor(rgb[1] / 255, rgb[2] / 255, rgb[3] / 255, 1) end
 
@@ -68,7 +72,8 @@ local function drawStatus()
     love.graphics.print(type(line) == 'table' and line.text or line, x + 8, y + 5 + (i - 1) * layout.LINE_HEIGHT)
   end
   setColour(layout.TEXT)
-  love.graphics.printf(('FPS %d'):format(love.timer.getFPS()), x, y + 5, w - 8, 'right')
+  local corner = shotFrame and ('frame %d'):format(shotFrame) or ('FPS %d'):format(love.timer.getFPS())
+  love.graphics.printf(corner, x, y + 5, w - 8, 'right')
   love.graphics.setScissor()
 end
 
@@ -119,9 +124,11 @@ local function parseArgs(args)
   return opts
 end
 
--- Draw scene n's initial state to a canvas and write it as a PNG file.
+-- Draw scene n's scripted frame to a canvas and write it as a PNG file.
 local function screenshot(path, n)
   switch(n)
+  sceneUtil.advance(current.scene, current.state)
+  shotFrame = current.scene.SHOT_FRAMES or 0
   local canvas = love.graphics.newCanvas(W, H)
   love.graphics.setCanvas(canvas)
   drawFrame()
@@ -132,7 +139,9 @@ local function screenshot(path, n)
   local ok, werr = f:write(png)
   local closed, cerr = f:close()
   if not ok or not closed then error('cannot write ' .. path .. ': ' .. tostring(werr or cerr), 0) end
-  print(('strike demo: scene %d (%s) written to %s'):format(n, scenes[n].name, path))
+  local lines = current.scene.status and current.scene.status(current.state) or {}
+  for _, line in ipairs(lines) do print(type(line) == 'table' and line.text or line) end
+  print(('strike demo: scene %d (%s), frame %d, written to %s'):format(n, scenes[n].name, shotFrame, path))
 end
 
 -- love.load receives the game's arguments already parsed by love.arg.parseGameArguments

@@ -1,5 +1,6 @@
---- The headless demo: a small scene, its collisions, MTVs, contact points and a ray cast,
---- reported as a table and drawn to an SVG file. Plain Lua, every VM:
+--- The headless demo: a small scene, its collisions, MTVs and contact points, then the same
+--- bodies in an S.pace with a rectangle query and a ray cast through the space, reported as
+--- a table and drawn to an SVG file. Plain Lua, every VM:
 ---   lua examples/demo.lua [path.svg]        (or `make demo`)
 --- As a module, `require('examples.demo').run(path, write)` builds the same scene, writes
 --- the SVG to `path` and sends the report, line by line, to `write` (default: io.write).
@@ -26,6 +27,13 @@ function demo.scene()
   }
 end
 
+--- The space's rectangle query: min corner x, y, width, height (as getBbox). It lies in the
+--- L block's notch: the L's bounding box overlaps it, the L does not.
+demo.QUERY = { 130, 170, 250, 30 }
+--- The ray cast through the space: origin x, y and direction dx, dy (from the top left,
+--- across the scene).
+demo.RAY = { 20, 40, 1, 0.45 }
+
 local function fmt(v) return ('%.1f'):format(v) end
 
 -- The picture draws each MTV arrow this many times longer than the MTV, so that shallow
@@ -43,7 +51,11 @@ local function bodySVG(out, body, colour)
       local v, n = s:getVertices()
       local pts = {}
       for i = 1, n do pts[i] = fmt(v[2 * i - 1]) .. ',' .. fmt(v[2 * i]) end
-      if n == 2 then
+      local r = s.getRounding and s:getRounding() or 0
+      if n == 2 and r > 0 then -- a capsule: its core segment swept by a disc of radius r
+        out[#out + 1] = ('<polyline class="shape" points="%s" fill="none" stroke="%s" stroke-opacity="0.35"'
+          .. ' stroke-width="%s" stroke-linecap="round"/>'):format(table.concat(pts, ' '), colour, fmt(2 * r))
+      elseif n == 2 then
         out[#out + 1] = ('<polyline class="shape" points="%s" fill="none" stroke="%s" stroke-width="3"/>')
           :format(table.concat(pts, ' '), colour)
       else
@@ -59,7 +71,8 @@ local COLOURS = { '#7a8a99', '#d98c3f', '#c9663d', '#3f7fd9', '#8f5fc9', '#3fb58
 
 --- Build the scene, report it through `write` and draw it to the SVG file at `path`.
 ---@param path string @param write function|nil
----@return table summary { pairs = n, collisions = n, contacts = n, shapes = n, rayHit = name or nil }
+---@return table summary { pairs = n, collisions = n, contacts = n, shapes = n, query = { names }, rayHit =
+---  name or nil, ray = { name =, distance =, x =, y =, nx =, ny = } or nil }
 function demo.run(path, write)
   write = write or io.write
   local scene = demo.scene()
@@ -103,26 +116,54 @@ function demo.run(path, write)
       end
     end
   end
-  -- a ray from the top left, across the scene
-  local ox, oy, dx, dy = 20, 40, 1, 0.45
-  local best, bestName, hx, hy
+  -- the same bodies in a space: which of them overlap a rectangle, and which one a ray hits
+  -- first (the space's queries test the exact shapes, through its broadphase)
+  local space = S.pace()
+  local nameOf = {}
   for _, item in ipairs(scene) do
-    local t, x, y = item.body:rayCast(ox, oy, dx, dy)
-    if t and (not best or t < best) then best, bestName, hx, hy = t, item.name, x, y end
+    space:add(item.body)
+    nameOf[item.body] = item.name
   end
-  if best then
-    summary.rayHit = bestName
-    write(('ray from (%s, %s) along (%s, %s): first hit %s at (%s, %s), distance %s\n'):format(ox, oy, dx, dy,
-      bestName, fmt(hx), fmt(hy), fmt(best)))
+  local qx, qy, qw, qh = demo.QUERY[1], demo.QUERY[2], demo.QUERY[3], demo.QUERY[4]
+  local found, n = space:queryRect(qx, qy, qw, qh)
+  summary.query = {}
+  local isFound, boxOnly = {}, {}
+  for i = 1, n do
+    summary.query[i] = nameOf[found[i]]
+    isFound[found[i]] = true
+  end
+  for _, item in ipairs(scene) do -- (bodies whose bounding box alone overlaps the rectangle)
+    local x0, y0, x1, y1 = item.body:getBounds()
+    if not isFound[item.body] and x0 < qx + qw and x1 > qx and y0 < qy + qh and y1 > qy then
+      boxOnly[#boxOnly + 1] = item.name
+    end
+  end
+  write(('space:queryRect(%s, %s, %s, %s) over the %d bodies in an S.pace: %d found: %s\n'):format(qx, qy, qw, qh,
+    space:count(), n, n > 0 and table.concat(summary.query, ', ') or 'none'))
+  if #boxOnly > 0 then
+    write(('  (exact shapes: the bounding box of %s overlaps the rectangle, the shape does not)\n')
+      :format(table.concat(boxOnly, ', ')))
+  end
+  svg[#svg + 1] = ('<rect class="query" x="%s" y="%s" width="%s" height="%s" fill="#2060e0" fill-opacity="0.08"'
+    .. ' stroke="#2060e0" stroke-dasharray="5 3"/>'):format(qx, qy, qw, qh)
+  local ox, oy, dx, dy = demo.RAY[1], demo.RAY[2], demo.RAY[3], demo.RAY[4]
+  local body, d, hx, hy, nx, ny = space:rayCast(ox, oy, dx, dy)
+  if body then
+    summary.rayHit = nameOf[body]
+    summary.ray = { name = nameOf[body], distance = d, x = hx, y = hy, nx = nx, ny = ny }
+    write(('space:rayCast from (%s, %s) along (%s, %s): first hit %s at (%s, %s), distance %s, normal (%.2f, %.2f)\n')
+      :format(ox, oy, dx, dy, nameOf[body], fmt(hx), fmt(hy), fmt(d), nx, ny))
     svg[#svg + 1] = ('<line class="ray" x1="%s" y1="%s" x2="%s" y2="%s" stroke="#c020c0" stroke-dasharray="6 4"/>')
       :format(ox, oy, fmt(hx), fmt(hy))
     svg[#svg + 1] = ('<circle class="hit" cx="%s" cy="%s" r="5" fill="#c020c0"/>'):format(fmt(hx), fmt(hy))
+    svg[#svg + 1] = ('<line class="normal" x1="%s" y1="%s" x2="%s" y2="%s" stroke="#c020c0" stroke-width="2"/>')
+      :format(fmt(hx), fmt(hy), fmt(hx + nx * 20), fmt(hy + ny * 20))
   else
-    write('ray: no hit\n')
+    write(('space:rayCast from (%s, %s) along (%s, %s): no hit\n'):format(ox, oy, dx, dy))
   end
-  svg[#svg + 1] = ('<text class="legend" x="12" y="428" font-family="sans-serif" font-size="13"'
-    .. ' fill="#333">Red: MTVs, arrows drawn %d× their length (true values in the table). Green: contact'
-    .. ' points. Magenta: the ray.</text>'):format(ARROW_SCALE)
+  svg[#svg + 1] = ('<text class="legend" x="12" y="428" font-family="sans-serif" font-size="12"'
+    .. ' fill="#333">Red: MTVs, drawn %d× their length (true values in the table). Green: contacts.'
+    .. ' Blue: space:queryRect. Magenta: space:rayCast.</text>'):format(ARROW_SCALE)
   svg[#svg + 1] = '</svg>'
   local f = assert(io.open(path, 'w'))
   f:write(table.concat(svg, '\n'), '\n')

@@ -1,7 +1,7 @@
 -- The LÖVE demo's scenes driven in plain Lua through their input handlers, as demo/main.lua
 -- drives them from LÖVE's callbacks: dragging and turning shapes, aiming rays, drawing
 -- concave outlines (valid and not), walking over tile seams and chain joints, and the
--- stress scene's counts.
+-- stress scene's space: its pairs, contact events and counts against a brute-force loop.
 local S = require('strike')
 local scenes = require('demo.scenes.list')
 
@@ -290,56 +290,87 @@ end)
 describe('demo scene: stress', function()
   local scene = sceneNamed('Stress')
 
-  it('counts grid pairs, narrow-phase tests and collisions, and times them', function()
-    local state = scene.new(S, W, H)
-    assert.equals(scene.COUNT, #state.bodies)
-    local collisions = 0
-    for _ = 1, 60 do
-      scene.update(state, 1 / 60)
-      local s = state.stats
-      assert.is_true(s.candidates > 0)
-      assert.is_true(s.narrow <= s.candidates and s.collisions <= s.narrow)
-      assert.is_true(s.ms >= 0)
-      collisions = collisions + s.collisions
-    end
-    assert.is_true(collisions > 0)
-    local lines = scene.status(state)
-    assert.matches(('^%d bodies: %d grid pairs, %d narrow%%-phase tests'):format(scene.COUNT, state.stats.candidates,
-      state.stats.narrow), lines[1])
-    assert.matches('ms/frame', lines[2])
-  end)
-
-  it('its grid reports every pair of overlapping boxes exactly once', function()
-    local Grid = require('demo.util.grid')
-    local rng = require('spec.helpers.prng').new(7)
-    for _, size in ipairs({ 32, 50, 7 }) do
-      local grid = Grid.new(size, 300, 200)
-      local boxes = {}
-      for i = 1, 150 do
-        local x, y = rng:range(-20, 310), rng:range(-20, 210) -- some past the borders
-        boxes[i] = { x, y, x + rng:range(0, 40), y + rng:range(0, 40) }
-        grid:insert(i, boxes[i][1], boxes[i][2], boxes[i][3], boxes[i][4])
-      end
-      local seen = {}
-      grid:eachPair(function(i, j)
-        local key = math.min(i, j) .. ',' .. math.max(i, j)
-        assert.is_nil(seen[key], 'reported twice: ' .. key)
-        seen[key] = true
-      end)
-      for i = 1, #boxes do
-        for j = i + 1, #boxes do
-          local a, b = boxes[i], boxes[j]
-          if a[1] < b[3] and b[1] < a[3] and a[2] < b[4] and b[2] < a[4] then
-            assert.is_true(seen[i .. ',' .. j], ('size %d: missed the pair %d, %d'):format(size, i, j))
-          end
+  -- The colliding pairs now, by a loop over every pair of bodies (boxes first, then
+  -- S.triking), as "i,j" keys of their indices in state.bodies (the order they were added
+  -- to the space) into a set, and as a list in pair order.
+  local function bruteForce(state)
+    local bodies, boxes = state.bodies, {}
+    for i, b in ipairs(bodies) do boxes[i] = { b.body:getBounds() } end
+    local set, list = {}, {}
+    for i = 1, #bodies do
+      local p = boxes[i]
+      for j = i + 1, #bodies do
+        local q = boxes[j]
+        if p[1] <= q[3] and q[1] <= p[3] and p[2] <= q[4] and q[2] <= p[4]
+          and S.triking(bodies[i].body, bodies[j].body) then
+          local key = i .. ',' .. j
+          set[key] = true
+          list[#list + 1] = key
         end
       end
-      grid:clear()
-      assert.equals(0, grid:eachPair(function() error('cleared') end))
     end
-  end)
+    return set, list
+  end
 
-  it('keeps every body inside the field, and + / - change the count', function()
+  local function count(set, minus)
+    local n = 0
+    for key in pairs(set) do if not minus[key] then n = n + 1 end end
+    return n
+  end
+
+  it('finds the colliding pairs through its space, as a brute-force loop does, and counts begins and ends',
+    function()
+      local state = scene.new(S, W, H)
+      assert.equals(scene.COUNT, #state.bodies)
+      assert.equals(scene.COUNT, state.space:count())
+      local index = {}
+      for i, b in ipairs(state.bodies) do index[b.body] = i end
+      local prev = {}
+      local collisions, begins, ends, stays = 0, 0, 0, 0
+      for frame = 1, 60 do
+        scene.move(state, 1 / 60)
+        local cur, list = bruteForce(state)
+        local flashBefore = {}
+        for i, b in ipairs(state.bodies) do flashBefore[i] = b.flash end
+        scene.collide(state)
+        local s = state.stats
+        local where = 'frame ' .. frame
+        assert.equals(#list, s.collisions, where)
+        assert.equals(count(cur, prev), s.begins, where)
+        assert.equals(count(prev, cur), s.ends, where)
+        -- the space's list, in its documented order: by the first body's rank, then the second's
+        local got = {}
+        for k = 1, s.collisions do
+          local rec = state.pairs[k]
+          got[k] = index[rec.a] .. ',' .. index[rec.b]
+        end
+        assert.same(list, got, where)
+        -- yellow: the bodies of the colliding pairs; a flash starts on every body of a pair
+        -- that began
+        local hit, began = {}, {}
+        for key in pairs(cur) do
+          local i, j = key:match('^(%d+),(%d+)$')
+          i, j = tonumber(i), tonumber(j)
+          hit[i], hit[j] = true, true
+          if not prev[key] then began[i], began[j] = true, true end
+        end
+        for i, b in ipairs(state.bodies) do
+          assert.equals(hit[i] or false, b.hit, where .. ': body ' .. i .. ' hit')
+          assert.equals(began[i] and scene.FLASH_TIME or flashBefore[i], b.flash, where .. ': body ' .. i .. ' flash')
+        end
+        collisions, begins, ends = collisions + s.collisions, begins + s.begins, ends + s.ends
+        stays = stays + s.collisions - s.begins
+        assert.is_true(s.ms >= 0)
+        prev = cur
+      end
+      assert.is_true(collisions > 0 and begins > 0 and ends > 0)
+      local lines = scene.status(state)
+      assert.matches(('^%d bodies in an S%%.pace: %d colliding pairs; contacts this frame: %d began, %d ended')
+        :format(scene.COUNT, state.stats.collisions, state.stats.begins, state.stats.ends), lines[1])
+      assert.matches('ms/frame', lines[2])
+    end)
+
+  it('keeps every body inside the field, and + / - add bodies to the space and remove them', function()
     local state = scene.new(S, W, H)
     for _ = 1, 120 do scene.update(state, 1 / 30) end
     for _, b in ipairs(state.bodies) do
@@ -348,13 +379,60 @@ describe('demo scene: stress', function()
     end
     scene.keypressed(state, '+')
     assert.equals(scene.COUNT + 50, #state.bodies)
+    assert.equals(scene.COUNT + 50, state.space:count())
     scene.update(state, 1 / 60)
     assert.equals(scene.COUNT + 50, state.stats.bodies)
+    local removed = {}
+    for i = #state.bodies - 99, #state.bodies do removed[#removed + 1] = state.bodies[i].body end
     scene.keypressed(state, '-')
     scene.keypressed(state, 'kp-')
     assert.equals(scene.COUNT - 50, #state.bodies)
+    assert.equals(scene.COUNT - 50, state.space:count())
+    for _, body in ipairs(removed) do assert.is_false(state.space:has(body)) end
+    scene.update(state, 1 / 60) -- (the removed bodies' contacts end here)
+    for k = 1, state.stats.collisions do
+      assert.is_true(state.space:has(state.pairs[k].a) and state.space:has(state.pairs[k].b))
+    end
     for _ = 1, 100 do scene.keypressed(state, '-') end
     assert.equals(50, #state.bodies)
+    assert.equals(50, state.space:count())
+  end)
+
+  it('B shows and hides the broadphase (S.howSpace on screen; its lines kept clear by the probes)', function()
+    local state = scene.new(S, W, H)
+    for _ = 1, 10 do scene.update(state, 1 / 60) end
+    local P, calls = recorder()
+    scene.paint(state, P)
+    assert.equals(0, countOf(calls, 'space'))
+    local plain = scene.probes(state)
+    scene.keypressed(state, 'b')
+    P, calls = recorder()
+    scene.paint(state, P)
+    assert.equals(1, countOf(calls, 'space'))
+    -- the probe model draws the tree's boxes too: every probe keeps clear of their lines
+    local margin = require('demo.util.probe').MARGIN
+    local boxes = {}
+    state.space:_eachNode(function(_, x0, y0, x1, y1) boxes[#boxes + 1] = { x0, y0, x1, y1 } end)
+    assert.is_true(#boxes >= scene.COUNT)
+    local probes = scene.probes(state)
+    assert.is_true(#probes >= 5)
+    for _, p in ipairs(probes) do
+      local px, py = p.x + 0.5, p.y + 0.5
+      for _, r in ipairs(boxes) do
+        local d -- from the pixel's centre to the box's outline
+        if px >= r[1] and px <= r[3] and py >= r[2] and py <= r[4] then
+          d = math.min(px - r[1], r[3] - px, py - r[2], r[4] - py)
+        else
+          d = math.sqrt(math.max(r[1] - px, 0, px - r[3]) ^ 2 + math.max(r[2] - py, 0, py - r[4]) ^ 2)
+        end
+        assert.is_true(d >= margin, ('probe %s at (%d, %d): %.2f px from a box'):format(p.what, p.x, p.y, d))
+      end
+    end
+    assert.are_not.same(plain, probes)
+    scene.keypressed(state, 'b')
+    P, calls = recorder()
+    scene.paint(state, P)
+    assert.equals(0, countOf(calls, 'space'))
   end)
 end)
 

@@ -1,6 +1,8 @@
 -- The LÖVE demo (demo/): every scene builds, updates and gives its screenshot probes in
 -- plain Lua; with STRIKE_SCREENSHOTS set, the screenshots that tools/screenshots.sh made
--- there (scene1.png ...) must show each probe's colour.
+-- there (scene1.png ...) must show each probe's colour. A screenshot shows a scene's
+-- scripted frame: its initial state, advanced by the scene's SHOT_FRAMES updates when it
+-- has them (demo/util/scene.lua, shot; the stress scene: a frame with bodies in contact).
 --
 --   bash tools/screenshots.sh /tmp/shots && STRIKE_SCREENSHOTS=/tmp/shots make spec
 --
@@ -10,6 +12,7 @@
 local S = require('strike')
 local scenes = require('demo.scenes.list')
 local layout = require('demo.util.layout')
+local sceneUtil = require('demo.util.scene')
 
 local W, H = layout.WIDTH, layout.HEIGHT
 local TOLERANCE = 2
@@ -58,7 +61,7 @@ describe('the demo scenes, in plain Lua', function()
 
       it('gives at least 3 shape probes and 2 background probes, inside the window and clear of the overlays',
         function()
-          local state = scene.new(S, W, H)
+          local state = sceneUtil.shot(scene, S, W, H)
           local probes = scene.probes(state)
           local shapes, background = count(probes)
           assert.is_true(shapes >= 3, ('scene %d: %d shape probes'):format(n, shapes))
@@ -81,11 +84,50 @@ describe('the demo scenes, in plain Lua', function()
           end
         end)
 
-      it('is deterministic: two builds give the same probes', function()
+      it('is deterministic: two builds give the same probes, at the start and at the scripted frame', function()
         assert.same(scene.probes(scene.new(S, W, H)), scene.probes(scene.new(S, W, H)))
+        assert.same(scene.probes(sceneUtil.shot(scene, S, W, H)), scene.probes(sceneUtil.shot(scene, S, W, H)))
       end)
     end)
   end
+end)
+
+describe('the stress scene\'s scripted frame', function()
+  local scene
+  for _, s in ipairs(scenes) do
+    if s.name == 'Stress' then scene = s end
+  end
+
+  local function bodyLabelled(state, label)
+    for _, b in ipairs(state.bodies) do
+      if b.label == label then return b end
+    end
+  end
+
+  it('is a later frame with bodies in contact, counted in the status bar, and probes on them', function()
+    assert.is_true((scene.SHOT_FRAMES or 0) > 0)
+    local state = sceneUtil.shot(scene, S, W, H)
+    local st = state.stats
+    assert.equals(scene.SHOT_FRAMES, st.frames)
+    assert.is_true(st.collisions > 0 and st.begins > 0 and st.ends > 0)
+    assert.matches(('^%d bodies in an S%%.pace: %d colliding pairs; contacts this frame: %d began, %d ended')
+      :format(scene.COUNT, st.collisions, st.begins, st.ends), scene.status(state)[1])
+    -- the picture must differ from the initial state's where it is checked: some probes lie
+    -- in bodies colliding now (drawn yellow) and some in bodies still flashing from a
+    -- contact that began (drawn lighter), colours that a frame-0 picture (every body in its
+    -- kind's colour) does not have
+    local colliding, flashing = 0, 0
+    for _, p in ipairs(scene.probes(state)) do
+      local b = bodyLabelled(state, p.what)
+      if b and b.hit then colliding = colliding + 1 elseif b and b.flash > 0 then flashing = flashing + 1 end
+      if b and (b.hit or b.flash > 0) then
+        local rgb = b.kind.rgb
+        assert.is_true(p.r ~= rgb[1] or p.g ~= rgb[2] or p.b ~= rgb[3], p.what .. ': drawn in its kind\'s colour')
+      end
+    end
+    assert.is_true(colliding >= 1, 'no probe in a colliding body')
+    assert.is_true(flashing >= 1, 'no probe in a flashing body')
+  end)
 end)
 
 describe('the demo screenshots', function()
@@ -107,7 +149,7 @@ describe('the demo screenshots', function()
         assert.equals(W, image.width, path .. ': width')
         assert.equals(H, image.height, path .. ': height')
         local wrong = {}
-        for _, p in ipairs(scene.probes(scene.new(S, W, H))) do
+        for _, p in ipairs(scene.probes(sceneUtil.shot(scene, S, W, H))) do
           local r, g, b = image:pixel(p.x, p.y)
           if math.abs(r - p.r) > TOLERANCE or math.abs(g - p.g) > TOLERANCE or math.abs(b - p.b) > TOLERANCE then
             wrong[#wrong + 1] = ('scene %d (%s), probe "%s" at (%d, %d): expected %d, %d, %d, got %d, %d, %d'):format(

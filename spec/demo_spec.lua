@@ -37,7 +37,6 @@ describe('the headless demo', function()
     local summary = demo.run(path, function(s) lines[#lines + 1] = s end)
     local report = table.concat(lines)
     assert.matches('picture written to ' .. path:gsub('%p', '%%%0'), report)
-    assert.matches('first hit L block', report)
     assert.is_true(summary.collisions >= 4)
     local svg = read(path)
     assert.matches('^<%?xml', svg)
@@ -47,6 +46,8 @@ describe('the headless demo', function()
     assert.equals(summary.collisions, count(svg, 'class="mtv"'))
     assert.equals(summary.contacts, count(svg, 'class="contact"'))
     assert.equals(1, count(svg, 'class="ray"'))
+    assert.equals(1, count(svg, 'class="query"'))
+    assert.equals(1, count(svg, 'class="normal"'))
     -- the arrows are drawn longer than the MTVs: both the picture and the report say so
     assert.equals(1, count(svg, 'class="legend"'))
     assert.matches('<text class="legend"[^>]*>[^<]*drawn 4× their length', svg)
@@ -54,6 +55,68 @@ describe('the headless demo', function()
     local shapes = 0
     for _, item in ipairs(demo.scene()) do shapes = shapes + item.body:getShapeCount() end
     assert.equals(shapes, summary.shapes)
+  end)
+
+  -- The report's space query and ray cast, against values computed here from a fresh copy of
+  -- the scene without a space: S.triking with the query's rectangle, and each body's rayCast.
+  it('reports a space query: the bodies that overlap its rectangle exactly, in the order they were added',
+    function()
+      local S = require('strike')
+      local lines = {}
+      local path = os.tmpname()
+      finally(function() os.remove(path) end)
+      local summary = demo.run(path, function(s) lines[#lines + 1] = s end)
+      local report = table.concat(lines)
+      local x, y, w, h = demo.QUERY[1], demo.QUERY[2], demo.QUERY[3], demo.QUERY[4]
+      local rect = S.trikers.Rectangle(x + w / 2, y + h / 2, w, h)
+      local expected, boxOnly = {}, {}
+      for _, item in ipairs(demo.scene()) do
+        local x0, y0, x1, y1 = item.body:getBounds()
+        if S.triking(rect, item.body) then
+          expected[#expected + 1] = item.name
+        elseif x0 < x + w and x1 > x and y0 < y + h and y1 > y then
+          boxOnly[#boxOnly + 1] = item.name
+        end
+      end
+      assert.is_true(#expected >= 2) -- (a query worth showing: several bodies,
+      assert.is_true(#boxOnly >= 1) --  and one that a test of boxes alone would list)
+      assert.same(expected, summary.query)
+      local line = ('space:queryRect(%s, %s, %s, %s) over the %d bodies in an S.pace: %d found: %s\n'):format(x, y, w,
+        h, #demo.scene(), #expected, table.concat(expected, ', '))
+      assert.is_truthy(report:find(line, 1, true), 'expected the line: ' .. line)
+      assert.is_truthy(report:find(('the bounding box of %s overlaps the rectangle, the shape does not')
+        :format(table.concat(boxOnly, ', ')), 1, true))
+    end)
+
+  it('reports a ray cast through the space: the closest body hit, its distance, point and normal', function()
+    local lines = {}
+    local path = os.tmpname()
+    finally(function() os.remove(path) end)
+    local summary = demo.run(path, function(s) lines[#lines + 1] = s end)
+    local report = table.concat(lines)
+    local ox, oy, dx, dy = demo.RAY[1], demo.RAY[2], demo.RAY[3], demo.RAY[4]
+    local best -- the closest hit over every body (ties: the first in the scene, as the space)
+    for _, item in ipairs(demo.scene()) do
+      local t, hx, hy, nx, ny = item.body:rayCast(ox, oy, dx, dy)
+      if t and (not best or t < best.distance) then
+        best = { name = item.name, distance = t, x = hx, y = hy, nx = nx, ny = ny }
+      end
+    end
+    assert.is_table(best)
+    local ray = summary.ray
+    assert.equals(best.name, ray.name)
+    assert.equals(best.name, summary.rayHit)
+    for _, k in ipairs({ 'distance', 'x', 'y', 'nx', 'ny' }) do assert.near(best[k], ray[k], 1e-9, k) end
+    -- the hit point lies on the ray, at that distance (dx, dy need not be a unit vector)
+    local l = math.sqrt(dx * dx + dy * dy)
+    assert.near(ox + dx / l * best.distance, ray.x, 1e-9)
+    assert.near(oy + dy / l * best.distance, ray.y, 1e-9)
+    assert.near(1, ray.nx * ray.nx + ray.ny * ray.ny, 1e-9)
+    local f = function(v) return ('%.1f'):format(v) end
+    local line = ('space:rayCast from (%s, %s) along (%s, %s): first hit %s at (%s, %s), distance %s,'
+      .. ' normal (%.2f, %.2f)\n'):format(ox, oy, dx, dy, best.name, f(best.x), f(best.y), f(best.distance), best.nx,
+      best.ny)
+    assert.is_truthy(report:find(line, 1, true), 'expected the line: ' .. line)
   end)
 
   it('the well-formedness check catches broken markup', function()

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Screenshots of the LÖVE demo: OUTDIR/scene1.png .. sceneN.png, each scene's initial state
-# as `love demo --screenshot FILE --scene N` draws it (800x600, help overlay shown), under
-# xvfb-run (a virtual X display; software OpenGL is enough). N is the length of
-# demo/scenes/list.lua, read with whichever plain Lua is installed.
+# Screenshots of the LÖVE demo: OUTDIR/scene1.png .. sceneN.png, each scene's scripted frame
+# (its initial state, or for a scene with SHOT_FRAMES the state after that many updates:
+# demo/util/scene.lua) as `love demo --screenshot FILE --scene N` draws it (800x600, help
+# overlay shown), under xvfb-run (a virtual X display; software OpenGL is enough). N is the
+# length of demo/scenes/list.lua, read with whichever plain Lua is installed.
 #   bash tools/screenshots.sh /tmp/shots
 #   STRIKE_SCREENSHOTS=/tmp/shots make spec     # spec/demo_screenshot_spec.lua checks them
 set -u

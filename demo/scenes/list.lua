@@ -12,6 +12,9 @@
 ---                          { text =, error = true })
 ---   probes(state)          screenshot probes: { x =, y =, r =, g =, b =, what = } points
 ---                          whose colour the screenshot of this state must show
+---   SHOT_FRAMES            (optional) the scripted screenshot shows the state after this
+---                          many updates of 1/60 s (util/scene.lua, advance); default 0,
+---                          the initial state
 ---   keypressed, keyreleased, mousepressed, mousereleased, mousemoved, wheelmoved
 ---                          (optional) LÖVE's arguments, after the state
 ---

@@ -58,4 +58,11 @@ function Painter:proj(mtv) self.S.howProj(mtv) end
 function Painter:contacts(contacts, len) self.S.howContacts(contacts, len) end
 function Painter:ray(body, x, y, dx, dy, maxDistance) return self.S.howRay(body, x, y, dx, dy, maxDistance) end
 
+--- A space (S.pace) as S.howSpace draws it: its bodies outlined in colour rgb, then its
+--- broadphase's boxes (in S.howSpace's own light blue).
+function Painter:space(space, rgb)
+  colour(rgb)
+  self.S.howSpace(space)
+end
+
 return Painter

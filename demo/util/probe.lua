@@ -216,6 +216,21 @@ function Model:ray(body, x, y, dx, dy, maxDistance)
   return t
 end
 
+local function nodeBox(self, x0, y0, x1, y1)
+  segment(self, x0, y0, x1, y0, 1)
+  segment(self, x1, y0, x1, y1, 1)
+  segment(self, x1, y1, x0, y1, 1)
+  segment(self, x0, y1, x0, y0, 1)
+end
+
+--- A space as S.howSpace draws it (strike/draw.lua): every body outlined (1 px), then every
+--- box of its broadphase (1-px rectangles, visited as S.howSpace visits them).
+function Model:space(space)
+  local bodies, n = space:bodies()
+  for i = 1, n do self:outline(bodies[i]) end
+  space:_eachNode(nodeBox, self)
+end
+
 -- The marks and the fills (from index `from` on) that come within CAP of a box: the only
 -- ones that can matter to a pixel in it.
 local function near(self, x0, y0, x1, y1, from)

@@ -25,6 +25,25 @@ function scene.reset(M, state)
   for k, v in pairs(fresh) do state[k] = v end
 end
 
+--- The time step of the scripted screenshot's updates (seconds).
+scene.SHOT_STEP = 1 / 60
+
+--- Bring a fresh state of scene M to the frame its scripted screenshot shows: M.SHOT_FRAMES
+--- updates of scene.SHOT_STEP each (none when the scene has no SHOT_FRAMES: its initial
+--- state). demo/main.lua does this before `--screenshot` draws, and the screenshot spec
+--- before it takes the probes, so both see the same frame.
+---@param M table the scene module @param state table a state M.new made
+---@return table state
+function scene.advance(M, state)
+  for _ = 1, M.SHOT_FRAMES or 0 do M.update(state, scene.SHOT_STEP) end
+  return state
+end
+
+--- The state scene M's scripted screenshot shows: M.new, then scene.advance.
+---@param M table @param S table strike @param w number @param h number
+---@return table state
+function scene.shot(M, S, w, h) return scene.advance(M, M.new(S, w, h)) end
+
 --- keyreleased for a scene that keeps the keys held down in state.keys (its keypressed
 --- sets state.keys[key] = true).
 ---@param state table @param key string

@@ -33,6 +33,7 @@ local finite = check.finite
 local pairRule, queryFilter, checkQuery = filter.pair, filter.query, filter.checkQuery
 local sqrt, huge, abs, type = math.sqrt, math.huge, math.abs, type
 local X, Y = layout.X, layout.Y
+local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
 
 -- Pair keys and sort keys pack two numbers below 2^26 into one double.
 local K = 67108864
@@ -111,11 +112,18 @@ local function flush(self)
   local nq = self._nq
   if nq == 0 then return end
   local queue, queued, body, tree = self._queue, self._queued, self._body, self._tree
+  local place = tree.place
   for i = 1, nq do
     local id = queue[i]
     if queued[id] then
       queued[id] = false
-      tree:update(id, body[id]:getBounds())
+      local b = body[id]
+      if b._pose then -- a shape: its bounds without the getter's checks
+        if b._dirty then b:_refresh() end
+        place(tree, id, b[MINX], b[MINY], b[MAXX], b[MAXY])
+      else
+        place(tree, id, b:getBounds())
+      end
     end
   end
   self._nq = 0
@@ -439,13 +447,16 @@ function Space:collisions(out)
   local frame = self._frame + 1
   self._frame = frame
   local body, rank, sensorOf, active = self._body, self._rank, self._sensor, self._active
+  local mask, group, pf = self._mask, self._group, self._pairFilter
   local cur, ncur, sorted, last = self._cur, 0, true, -1
   local scratch = self._scratch
   for p = 1, np do
     local i, j = buf[2 * p - 1], buf[2 * p]
     local key = i * K + j
     if rank[i] > rank[j] then i, j = j, i end
-    if allowed(self, i, j) then
+    local g = group[i]
+    -- (the usual case inline: no masks, groups or pair filter to ask)
+    if (not mask[i] and not mask[j] and (g == 0 or g ~= group[j]) and not pf) or allowed(self, i, j) then
       local a, b = body[i], body[j]
       local rec = active[key]
       if rec and (rec.a ~= a or rec.b ~= b) then rec = nil end -- (a reused id: that one ended)

@@ -263,32 +263,67 @@ local function swap(self, a, out, inner, g)
   refit(self, inner)
 end
 
+-- The gains of the four swaps under a node with children b, c (see rotateArea): swapping b
+-- with f (c's first child, c becomes (b, g)), b with g, c with d (b's first child), c with e.
+local function gains(self, b, c)
+  local c1, c2, x0, y0, x1, y1 = self.child1, self.child2, self.nx0, self.ny0, self.nx1, self.ny1
+  local d, e, f, g = c1[b], c2[b], c1[c], c2[c]
+  local pb, pc = x1[b] - x0[b] + y1[b] - y0[b], x1[c] - x0[c] + y1[c] - y0[c]
+  return pc - perimOf(self, b, g), pc - perimOf(self, b, f), pb - perimOf(self, c, e), pb - perimOf(self, c, d)
+end
+
+-- Which swap gains most, 1 to 4 in the order of gains(), when one gains at all.
+local function whichSwap(self, b, c)
+  local gainF, gainG, gainD, gainE = gains(self, b, c)
+  local best = max(gainF, gainG, gainD, gainE)
+  if best == gainF then return 1 end
+  if best == gainG then return 2 end
+  if best == gainD then return 3 end
+  return 4
+end
+
+-- 0 when no swap under a node with children b, c gains, else which one does (whichSwap).
+-- The usual answer, 0, takes no branch on LuaJIT; the other path computes the gains again
+-- rather than keep them live across the branch: a trace exit with a dozen numbers live in
+-- registers made LuaJIT abort every side trace there ("register coalescing too complex":
+-- hundreds of aborted traces a second in a moving world, and flushes of the trace cache).
+local function bestSwap(self, b, c)
+  local gainF, gainG, gainD, gainE = gains(self, b, c)
+  if max(gainF, gainG, gainD, gainE) <= 0 then return 0 end
+  return whichSwap(self, b, c)
+end
+
 -- Tree rotation by surface area (Box2D v3's tree rotations, after Kopta et al., "Fast,
 -- effective BVH updates for animated scenes", 2012): of the four swaps of a child of n
 -- with a grandchild on the other side, make the one that shrinks the changed child's
 -- perimeter most, if any does (then returns true). n's own box is unchanged. A leaf's
 -- "children" are node 0, whose box is infinite: swaps with them never gain.
 local function rotateArea(self, n)
-  local c1, c2, x0, y0, x1, y1 = self.child1, self.child2, self.nx0, self.ny0, self.nx1, self.ny1
+  local c1, c2 = self.child1, self.child2
   local b, c = c1[n], c2[n]
-  local d, e, f, g = c1[b], c2[b], c1[c], c2[c]
-  local pb, pc = x1[b] - x0[b] + y1[b] - y0[b], x1[c] - x0[c] + y1[c] - y0[c]
-  local gainF = pc - perimOf(self, b, g) -- swap b and f: c becomes (b, g)
-  local gainG = pc - perimOf(self, b, f)
-  local gainD = pb - perimOf(self, c, e)
-  local gainE = pb - perimOf(self, c, d)
-  local best = max(gainF, gainG, gainD, gainE) -- (no branch on LuaJIT in the usual case)
-  if best <= 0 then return false end
-  if best == gainF then
-    swap(self, n, b, c, f)
-  elseif best == gainG then
-    swap(self, n, b, c, g)
-  elseif best == gainD then
-    swap(self, n, c, b, d)
+  local k = bestSwap(self, b, c)
+  if k == 0 then return false end
+  if k == 1 then
+    swap(self, n, b, c, c1[c])
+  elseif k == 2 then
+    swap(self, n, b, c, c2[c])
+  elseif k == 3 then
+    swap(self, n, c, b, c1[b])
   else
-    swap(self, n, c, b, e)
+    swap(self, n, c, b, c2[b])
   end
   return true
+end
+
+-- Refit node n; true when its box or height changed. (Its own function: the old box is
+-- dead once it returns, so the trace exits of the rotations that follow carry fewer live
+-- values; see bestSwap.)
+local function refitChanged(self, n)
+  local x0, y0, x1, y1, h = self.nx0, self.ny0, self.nx1, self.ny1, self.height
+
+  local ox0, oy0, ox1, oy1, oh = x0[n], y0[n], x1[n], y1[n], h[n]
+  refit(self, n)
+  return x0[n] ~= ox0 or y0[n] ~= oy0 or x1[n] ~= ox1 or y1[n] ~= oy1 or h[n] ~= oh
 end
 
 -- Refit and rebalance the nodes from n up: AVL-like when one side is much taller, then by
@@ -296,7 +331,6 @@ end
 -- nothing above it changes then.
 local function fixUp(self, n)
   local parent, c1, c2, h = self.parent, self.child1, self.child2, self.height
-  local x0, y0, x1, y1 = self.nx0, self.ny0, self.nx1, self.ny1
   while n ~= 0 do
     local a, b = c1[n], c2[n]
     local d = h[b] - h[a]
@@ -306,13 +340,12 @@ local function fixUp(self, n)
     elseif d < -AVL_SLACK then
       n, same = rotateUp(self, n, a), false
     end
-    local ox0, oy0, ox1, oy1, oh = x0[n], y0[n], x1[n], y1[n], h[n]
-    refit(self, n)
+    if refitChanged(self, n) then same = false end
     if rotateArea(self, n) then
       refit(self, n) -- (the height may change)
       same = false
     end
-    if same and x0[n] == ox0 and y0[n] == oy0 and x1[n] == ox1 and y1[n] == oy1 and h[n] == oh then return end
+    if same then return end
     n = parent[n]
   end
 end
@@ -573,6 +606,17 @@ end
 function Tree:update(id, minx, miny, maxx, maxy)
   checkId(self, 'update', id)
   checkBox('update', minx, miny, maxx, maxy)
+  return self:place(id, minx, miny, maxx, maxy)
+end
+
+--- Tree:update without its checks, for a caller whose ids and boxes are known good (S.pace:
+--- strike's bounds are finite and ordered).
+---@param id integer
+---@param minx number
+---@param miny number
+---@param maxx number
+---@param maxy number
+function Tree:place(id, minx, miny, maxx, maxy)
   local px0, py0, px1, py1 = self.px0, self.py0, self.px1, self.py1
   local dx = (minx + maxx - px0[id] - px1[id]) * 0.5
   local dy = (miny + maxy - py0[id] - py1[id]) * 0.5
@@ -826,6 +870,11 @@ end
 ---@return integer
 function Tree:candidates()
   return self.nCand
+end
+
+if JIT then
+  local jit = rawget(_G, 'jit')
+  for _, f in ipairs({ fixUp, rotateArea, whichSwap, bestSwap, gains, swap, rotateUp, refitChanged }) do jit.off(f) end
 end
 
 return Tree
