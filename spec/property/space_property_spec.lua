@@ -499,7 +499,7 @@ local function runWorld(seed, index, stats, cfg)
     else
       local x, y = w:randomPoint()
       if rng:next() < 0.7 then
-        q, how = w:shape(x, y, w.s * World.logRange(rng, 0.2, 4)), 'a transient shape'
+        q, how = w:register(w:shape(x, y, w.s * World.logRange(rng, 0.2, 4)), 'transient'), 'a transient shape'
       else
         q, how = w:newBody(x, y), 'a transient body'
       end
@@ -658,7 +658,7 @@ local function runWorld(seed, index, stats, cfg)
           compareCheck(w.pool[rng:int(1, #w.pool)], true)
         else
           local x, y = w:randomPoint()
-          compareCheck(w:shape(x, y, w.s * World.logRange(rng, 0.2, 3)), true)
+          compareCheck(w:register(w:shape(x, y, w.s * World.logRange(rng, 0.2, 3)), 'transient'), true)
         end
       end
       queryPoint()

@@ -444,7 +444,7 @@ function W:step(ops)
     end
     if child then
       removeFrom(self.pool, child)
-      self.info[child] = nil -- (now part of a body)
+      self.info[child].kind = 'member of #' .. self.info[m.body].id -- (now part of a body)
     else
       local x, y = m.body:getCentroid()
       if m.body:getShapeCount() == 0 then x, y = self:randomPoint() end
