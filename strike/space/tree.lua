@@ -53,6 +53,8 @@ local PREDICT_LIMIT = 1
 local AVL_SLACK = 4
 --- Sorts up to this many entries by insertion, longer ones by heapsort.
 local SHORT_SORT = 12
+--- A moved leaf is rotated by area this many levels above where it is inserted.
+local MOVED_LEVELS = 4
 -- A proxy's pending tree work.
 local NONE, MOVED, NEW = 0, 1, 2
 
@@ -327,12 +329,13 @@ local function refitChanged(self, n)
   return x0[n] ~= ox0 or y0[n] ~= oy0 or x1[n] ~= ox1 or y1[n] ~= oy1 or h[n] ~= oh
 end
 
--- Refit and rebalance the nodes from n up: AVL-like when one side is much taller, then by
--- area. Stops at the first node that comes out as it was (box, height, children), since
--- nothing above it changes then.
-local function fixUp(self, n)
+-- Refit and rebalance the nodes from n up: AVL-like when one side is much taller, then, on
+-- the first `levels` nodes, by area. Stops at the first node that comes out as it was (box,
+-- height, children), since nothing above it changes then.
+local function fixUp(self, n, levels)
   local parent, c1, c2, h = self.parent, self.child1, self.child2, self.height
   while n ~= 0 do
+    levels = levels - 1
     local a, b = c1[n], c2[n]
     local d = h[b] - h[a]
     local same = true
@@ -342,7 +345,7 @@ local function fixUp(self, n)
       n, same = rotateUp(self, n, a), false
     end
     if refitChanged(self, n) then same = false end
-    if rotateArea(self, n) then
+    if levels >= 0 and rotateArea(self, n) then
       refit(self, n) -- (the height may change)
       same = false
     end
@@ -418,8 +421,9 @@ else
   end
 end
 
--- Put leaf into the tree, beside the sibling findSibling chooses.
-local function insertLeaf(self, leaf)
+-- Put leaf into the tree, beside the sibling findSibling chooses, rotating by area on the
+-- first `levels` levels above it (see fixUp).
+local function insertLeaf(self, leaf, levels)
   if self.root == 0 then
     self.root = leaf
     self.parent[leaf] = 0
@@ -438,7 +442,7 @@ local function insertLeaf(self, leaf)
   else
     c2[old] = p
   end
-  fixUp(self, p)
+  fixUp(self, p, levels)
 end
 
 local function removeLeaf(self, leaf)
@@ -457,7 +461,7 @@ local function removeLeaf(self, leaf)
     return
   end
   if c1[g] == p then c1[g] = sibling else c2[g] = sibling end
-  fixUp(self, g)
+  fixUp(self, g, 0)
 end
 
 ------------------------------------------------------------------ pairs
@@ -526,7 +530,11 @@ local function flush(self)
       local leaf = leafOf[id]
       if state == MOVED then removeLeaf(self, leaf) end
       x0[leaf], y0[leaf], x1[leaf], y1[leaf] = fx0[id], fy0[id], fx1[id], fy1[id]
-      insertLeaf(self, leaf)
+      -- (a new leaf rotates by area all the way up, a moved one only near where it lands:
+      -- 1,000 circles moving for 3,000 frames, Lua 5.4, counted in VM instructions: the
+      -- tree's work per frame 468k all the way up, 394k at 4 levels, 359k at 2; the sum of
+      -- the inner nodes' perimeters after it 196k, 201k and 225k)
+      insertLeaf(self, leaf, state == NEW and huge or MOVED_LEVELS)
       pending[id] = NONE
     end
   end
