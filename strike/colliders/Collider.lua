@@ -522,7 +522,14 @@ end
 local function translateBy(self, dx, dy, fname)
   if not self._leavesOK then refreshLeaves(self) end
   local mass, bounds = self._massOK, self._clean
-  eachLeaf(self, fname, moved, dx, dy)
+  local s = self._single
+  if s then -- (one leaf, the usual body: eachLeaf without its loops and calls)
+    local x, y = s[X] + dx, s[Y] + dy
+    checkPose(s, x, y, s._scale, fname)
+    s:_place(x, y, s._scale)
+  else
+    eachLeaf(self, fname, moved, dx, dy)
+  end
   if self._nleaves > 0 and (mass or bounds) then shift(self, dx, dy, mass, bounds) end
 end
 
@@ -532,8 +539,8 @@ end
 ---@return self
 function Collider:translate(dx, dy)
   if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:translate') end
-  number(dx, 'strike.Collider:translate', 'dx')
-  number(dy, 'strike.Collider:translate', 'dy')
+  if type(dx) ~= 'number' or dx - dx ~= 0 then number(dx, 'strike.Collider:translate', 'dx') end
+  if type(dy) ~= 'number' or dy - dy ~= 0 then number(dy, 'strike.Collider:translate', 'dy') end
   translateBy(self, dx + 0.0, dy + 0.0, 'strike.Collider:translate')
   return self
 end
