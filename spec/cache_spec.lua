@@ -198,6 +198,27 @@ describe('nested collider caches', function()
         end,
           probe = function() return H.Circle(58, 6, 1) end, ray = { 58, 30, 0, -1 },
           same = { 'getShapeCount' } },
+        -- A collider's translation shifts the caches of it and of the colliders in it (see
+        -- Collider's translateBy): the next change below must still reach every one of them.
+        { name = 'outer:translate(0, 50) then s:translate(10, 6)', apply = function(t)
+          t.outer:translate(0, 50)
+          t.s:translate(10, 6)
+        end,
+          probe = function() return H.Circle(50, 56, 1) end, ray = { 50, 90, 0, -1 },
+          same = { 'getShapeCount', 'getArea' } },
+        { name = 'outer:translateTo(0, 0), inner:getBbox(), s:scale(2)', apply = function(t)
+          t.outer:translateTo(0, 0)
+          t.inner:getBbox()
+          t.s:scale(2)
+        end,
+          probe = function() return H.Circle(5, 0, 1) end, ray = { -60, 0, 1, 0 },
+          same = { 'getShapeCount' } },
+        { name = 'inner:translate(0, 50) then inner:add(a new shape)', apply = function(t)
+          t.inner:translate(0, 50)
+          t.inner:add(H.Rectangle(60, 0, 4, 4))
+        end,
+          probe = function() return H.Circle(60, 0, 1) end, ray = { 60, 30, 0, -1 },
+          same = {} },
         -- A move (bounds stale all the way up, leaf lists still good), then a new shape.
         { name = 's:translate(10, 6) then inner:add(a new shape)', apply = function(t)
           t.s:translate(10, 6)

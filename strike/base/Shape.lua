@@ -211,9 +211,15 @@ end
 ---@return self
 function Shape:translate(dx, dy)
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:translate') end
-  number(dx, 'strike.Shape:translate', 'dx')
-  number(dy, 'strike.Shape:translate', 'dy')
-  setPose(self, self[X] + dx, self[Y] + dy, self._scale, 'strike.Shape:translate')
+  -- (the checks of number and setPose written out: a game calls this for every body every
+  -- frame, and an interpreter pays for each call; the errors are theirs)
+  if type(dx) ~= 'number' or dx - dx ~= 0 then number(dx, 'strike.Shape:translate', 'dx') end
+  if type(dy) ~= 'number' or dy - dy ~= 0 then number(dy, 'strike.Shape:translate', 'dy') end
+  local x, y = self[X] + dx, self[Y] + dy
+  if abs(x) + abs(y) + self._radius * self._scale == huge then
+    setPose(self, x, y, self._scale, 'strike.Shape:translate') -- (raises the error)
+  end
+  self[X], self[Y] = x + 0.0, y + 0.0
   self:_touch()
   return self
 end
@@ -224,9 +230,12 @@ end
 ---@return self
 function Shape:translateTo(x, y)
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:translateTo') end
-  number(x, 'strike.Shape:translateTo', 'x')
-  number(y, 'strike.Shape:translateTo', 'y')
-  setPose(self, x, y, self._scale, 'strike.Shape:translateTo')
+  if type(x) ~= 'number' or x - x ~= 0 then number(x, 'strike.Shape:translateTo', 'x') end
+  if type(y) ~= 'number' or y - y ~= 0 then number(y, 'strike.Shape:translateTo', 'y') end
+  if abs(x) + abs(y) + self._radius * self._scale == huge then
+    setPose(self, x, y, self._scale, 'strike.Shape:translateTo') -- (raises the error)
+  end
+  self[X], self[Y] = x + 0.0, y + 0.0
   self:_touch()
   return self
 end

@@ -26,6 +26,8 @@ local check = require(ROOT .. '.check')
 local limits = require(ROOT .. '.limits')
 local layout = require(ROOT .. '.base.layout')
 local Rectangle = require(ROOT .. '.shapes.Rectangle')
+local ray = require(ROOT .. '.collide.ray')
+local Collider = require(ROOT .. '.colliders.Collider')
 
 local collide = compound.collide
 local fail, describe, what, badSelf = check.fail, check.describe, check.what, check.badSelf
@@ -53,7 +55,7 @@ function Space:new()
   self._body, self._rank, self._layer, self._mask, self._group, self._sensor = {}, {}, {}, {}, {}, {}
   self._queued, self._queue, self._nq = {}, {}, 0
   self._n, self._nextRank = 0, 0
-  self._buf, self._ids = {}, {}
+  self._buf, self._ids, self._ts = {}, {}, {}
   -- contact tracking: records by pair key, the touching records of the last call (in
   -- order) and of this one, and a pool of ended records
   self._active, self._prev, self._cur, self._pool = {}, {}, {}, {}
@@ -739,17 +741,17 @@ local function checkRay(fname, x, y, dx, dy, maxDistance)
   return ux, uy, maxDistance
 end
 
--- The tree's test for rayCast: the closest hit so far in self._hit*, ties by rank.
-local function closest(self, id, best)
-  local b = self._body[id]
-  if not queryFilter(self._rayFilter, b, self._layer[id]) then return best end
-  local d, hx, hy, nx, ny, shape = b:rayCast(self._rx, self._ry, self._ux, self._uy, best)
-  if d and (d < best or self._hitRank == nil or self._rank[id] < self._hitRank) then
-    self._hitBody, self._hitRank, self._hd, self._hx, self._hy = b, self._rank[id], d, hx, hy
-    self._hnx, self._hny, self._hshape = nx, ny, shape or b
-    return d
+local cast, leavesRayCast, leafList = ray.cast, ray.leavesRayCast, Collider._leafList
+
+-- body:rayCast for a unit direction, without the argument checks: distance, point, normal
+-- and the shape hit, or nil.
+local function rayBody(b, x, y, ux, uy, maxDistance)
+  if b._pose then
+    local d, hx, hy, nx, ny = cast(b, x, y, ux, uy, maxDistance)
+    return d, hx, hy, nx, ny, b
   end
-  return best
+  local leaves, n = leafList(b)
+  return leavesRayCast(leaves, n, x, y, ux, uy, maxDistance)
 end
 
 --- The closest body the ray from (x, y) along (dx, dy) hits within maxDistance (default
@@ -774,36 +776,32 @@ function Space:rayCast(x, y, dx, dy, maxDistance, filterArg)
   local ux, uy, maxT = checkRay('strike.Space:rayCast', x, y, dx, dy, maxDistance)
   checkQuery(filterArg, 'strike.Space:rayCast', 6)
   flush(self)
-  self._rx, self._ry, self._ux, self._uy, self._rayFilter = x, y, ux, uy, filterArg
-  self._hitBody, self._hitRank = nil, nil
-  self._tree:raycast(x, y, ux, uy, maxT, closest, self)
-  local b = self._hitBody
-  self._rayFilter, self._hitBody = nil, nil
-  if not b then return nil end
-  local shape = self._hshape
-  self._hshape = nil
-  return b, self._hd, self._hx, self._hy, self._hnx, self._hny, shape
-end
-
--- The tree's test for rayCastAll: every hit into self._all.
-local function every(self, id, best)
-  local b = self._body[id]
-  if not queryFilter(self._rayFilter, b, self._layer[id]) then return best end
-  local d, hx, hy, nx, ny, shape = b:rayCast(self._rx, self._ry, self._ux, self._uy, best)
-  if d then
-    local out, k = self._all, self._nall + 1
-    self._nall = k
-    local rec = out[k]
-    if type(rec) ~= 'table' or rec._rank == nil then
-      local spare = out._spare
-      rec = spare and spare[#spare]
-      if rec then spare[#spare] = nil else rec = {} end
-      out[k] = rec
+  local ids, ts = self._ids, self._ts
+  local k = self._tree:rayCandidates(x, y, ux, uy, maxT, ids, ts)
+  for i = 2, k do -- (insertion sort by entry distance: a handful of candidates)
+    local id, t = ids[i], ts[i]
+    local j = i - 1
+    while j >= 1 and ts[j] > t do
+      ids[j + 1], ts[j + 1] = ids[j], ts[j]
+      j = j - 1
     end
-    rec.body, rec.distance, rec.x, rec.y, rec.nx, rec.ny, rec.shape = b, d, hx, hy, nx, ny, shape or b
-    rec._rank = self._rank[id]
+    ids[j + 1], ts[j + 1] = id, t
   end
-  return best
+  local bodies, layer, rank = self._body, self._layer, self._rank
+  local best, hit, hitRank, hd, hx, hy, hnx, hny, hshape = maxT, nil, 0, 0, 0, 0, 0, 0, nil
+  for i = 1, k do
+    if ts[i] > best then break end -- (every box after this one starts beyond the best hit)
+    local id = ids[i]
+    local b = bodies[id]
+    if queryFilter(filterArg, b, layer[id]) then
+      local d, px, py, nx, ny, shape = rayBody(b, x, y, ux, uy, best)
+      if d and (d < best or not hit or rank[id] < hitRank) then
+        best, hit, hitRank, hd, hx, hy, hnx, hny, hshape = d, b, rank[id], d, px, py, nx, ny, shape
+      end
+    end
+  end
+  if not hit then return nil end
+  return hit, hd, hx, hy, hnx, hny, hshape
 end
 
 local function byDistance(r1, r2)
@@ -831,11 +829,28 @@ function Space:rayCastAll(x, y, dx, dy, maxDistance, filterArg, out)
   checkOut('strike.Space:rayCastAll', out, 7)
   out = out or {}
   flush(self)
-  self._rx, self._ry, self._ux, self._uy, self._rayFilter = x, y, ux, uy, filterArg
-  self._all, self._nall = out, 0
-  self._tree:raycast(x, y, ux, uy, maxT, every, self)
-  local k = self._nall
-  self._all, self._rayFilter = nil, nil
+  local ids, ts = self._ids, self._ts
+  local n = self._tree:rayCandidates(x, y, ux, uy, maxT, ids, ts)
+  local bodies, layer, rank, k = self._body, self._layer, self._rank, 0
+  for i = 1, n do
+    local id = ids[i]
+    local b = bodies[id]
+    if queryFilter(filterArg, b, layer[id]) then
+      local d, px, py, nx, ny, shape = rayBody(b, x, y, ux, uy, maxT)
+      if d then
+        k = k + 1
+        local rec = out[k]
+        if type(rec) ~= 'table' or rec._rank == nil then
+          local spare = out._spare
+          rec = spare and spare[#spare]
+          if rec then spare[#spare] = nil else rec = {} end
+          out[k] = rec
+        end
+        rec.body, rec.distance, rec.x, rec.y, rec.nx, rec.ny, rec.shape = b, d, px, py, nx, ny, shape
+        rec._rank = rank[id]
+      end
+    end
+  end
   -- (records past k go to the spares; then sort the k)
   local i = k + 1
   while out[i] ~= nil do
