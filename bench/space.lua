@@ -3,6 +3,7 @@
 --- Lua 5.4):
 ---   luajit bench/space.lua [--n 1000,5000,20000,100000] [--frames 60] [--only strike,bump]
 ---                          [--sections frame,rays,build,churn,memory] [--hc-max 20000] [--save]
+---                          [--jit love|stock]
 --- Libraries (--only): strike (S.trikers colliders in S.pace), strike-shapes (bare S.hapes in
 --- S.pace), and the peers found in $STRIKE_PEERS (HC, bump; checkouts named HC and bump.lua,
 --- never part of this repository), through bench/adapters/space_*.lua; box2d (love.physics)
@@ -74,9 +75,20 @@ do
       for _, name in ipairs(list(v)) do opts.sections[name] = true end
       i = i + 1
     elseif a == '--save' then opts.save = true
+    elseif a == '--jit' then opts.jit = v; i = i + 1
     else error('unknown option ' .. a) end
     i = i + 1
   end
+end
+
+-- LuaJIT's limits: LÖVE's by default, as a game runs (LÖVE 11.4's boot.lua raises them:
+-- maxtrace 2000, maxrecord 8000, maxmcode 16384 KB; the issue's flush target is under these),
+-- or the standalone interpreter's own with --jit stock.
+local JIT_LIMITS = 'stock'
+if jit and opts.jit ~= 'stock' then
+  if opts.jit ~= nil and opts.jit ~= 'love' then error('--jit must be love or stock') end
+  require('jit.opt').start('maxtrace=2000', 'maxrecord=8000', 'maxmcode=16384')
+  JIT_LIMITS = 'love'
 end
 
 local RAYS, RAY_N, RAY_LEN = 10000, 1000, 300
@@ -220,7 +232,7 @@ local function frame(lib, st, w)
 end
 
 local t00 = os.time()
-note(('strike space bench on %s'):format(vmName))
+note(('strike space bench on %s%s'):format(vmName, jit and (' (JIT limits: ' .. JIT_LIMITS .. ')') or ''))
 
 ---------------------------------------------------------------------------------------------
 -- Frame workload.
@@ -670,7 +682,7 @@ local function tableOut(head, rows)
   print()
 end
 
-print(('strike space bench — %s'):format(vmName))
+print(('strike space bench — %s%s'):format(vmName, jit and (' (JIT limits: ' .. JIT_LIMITS .. ')') or ''))
 for _, l in ipairs(libs) do print(('  %-13s %s'):format(l.name, l.note)) end
 if love then print(('  %-13s %s'):format('box2d', 'love.physics: dynamic bodies, sensor fixtures, setPosition, '
   .. 'world:update(1/60) + getContacts (isTouching counted); LÖVE\'s LuaJIT')) end
