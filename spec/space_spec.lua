@@ -487,6 +487,76 @@ describe('S.pace', function()
     end)
   end)
 
+  describe('regressions found by the property spec', function()
+    it('a ray aimed at a Point hits it (a box of no size survives the slab test\'s rounding)', function()
+      local p = H.Point(-8.4000643149018579, 0.11905944446058037)
+      local sp = S.pace()
+      sp:add(p)
+      local x, y = 1.0320830489658217, 6.2198039685468203
+      local dx, dy = -8.4000643149018579 - x, 0.11905944446058037 - y
+      local want = p:rayCast(x, y, dx, dy)
+      assert.is_number(want)
+      local body, d = sp:rayCast(x, y, dx, dy)
+      assert.equals(p, body)
+      assert.equals(want, d)
+    end)
+
+    it('a collider hit through the space is the collider\'s own rayCast, to the last bit', function()
+      local c = T.Collider(H.Point(-0.55479071594532137, -4.3675628930179231))
+      local sp = S.pace()
+      sp:add(c)
+      local x, y, dx, dy = -5.6295429522309188, 4.2716018549500046, 5.0747522362855975, -8.6391647479679285
+      local want = { c:rayCast(x, y, dx, dy) }
+      assert.is_number(want[1])
+      local got = { sp:rayCast(x, y, dx, dy) }
+      assert.equals(c, got[1])
+      for i = 1, 6 do assert.equals(want[i], got[i + 1]) end
+    end)
+
+    it('an exact tie goes to the body added first, even where the box entry rounds past the hit', function()
+      local sp = S.pace()
+      local a = sp:add(H.Rectangle(-32, -58880, 128, 192))
+      sp:add(H.Rectangle(-32, -58880, 128, 192))
+      assert.equals(a, (sp:rayCast(-82.09542654551251, -59525.306431321012, 680.42253359532197, 8764.8926703096677)))
+    end)
+
+    it('a body removed and added again before collisions() ends its pairs and begins new ones', function()
+      local sp = S.pace()
+      local a = sp:add(tagged(H.Circle(0, 0, 5), 'a'))
+      local b = sp:add(tagged(H.Circle(8, 0, 5), 'b'))
+      local log = {}
+      for _, ev in ipairs({ 'begin', 'stay', 'end' }) do
+        sp:on(ev, function(x, y) log[#log + 1] = ev .. ':' .. x.tag .. '-' .. y.tag end)
+      end
+      sp:collisions()
+      sp:remove(b)
+      sp:add(b) -- (takes its old id back, and comes after a again)
+      sp:collisions()
+      assert.equals('begin:a-b,end:a-b,begin:a-b', table.concat(log, ','))
+      assert.is_truthy(a)
+    end)
+
+    it('persisted compares the shapes too, when a body changes between one member and several', function()
+      local sp = S.pace()
+      local floor = sp:add(T.Collider(H.Rectangle(0, 0, 100, 10)))
+      local box = sp:add(H.Rectangle(0, -9, 10, 10))
+      local rec
+      sp:on('begin', function(_, _, r) rec = r end)
+      sp:on('stay', function(_, _, r) rec = r end)
+      sp:collisions()
+      floor:add(H.Rectangle(500, 0, 10, 2)) -- a member far away: the same contact
+      sp:collisions()
+      assert.equals(2, rec.contacts.count)
+      assert.is_true(rec.contacts[1].persisted)
+      assert.is_true(rec.contacts[2].persisted)
+      floor:remove(1) -- the floor's piece goes: the box now rests on the other member
+      box:translateTo(500, -5.5)
+      sp:collisions()
+      assert.is_true(rec.contacts.count >= 1)
+      for i = 1, rec.contacts.count do assert.is_false(rec.contacts[i].persisted) end
+    end)
+  end)
+
   describe('allocation with out tables', function()
     setup(alloc.jitOff) -- measured interpreted on LuaJIT: see spec/helpers/alloc.lua
     teardown(alloc.jitOn)

@@ -135,7 +135,8 @@ local function checkMTV(fname, mtv)
 end
 
 --- Contact points of a collision (see "Contacts" in the README): a list of 1 or 2 points
---- `{x =, y =, depth =, id =}` with `count` and the normal `nx, ny` (the MTV's direction),
+--- `{x =, y =, depth =, id =, colliderShape =, collidedShape =}` (the shapes whose features
+--- touch) with `count` and the normal `nx, ny` (the MTV's direction),
 --- or nil for a separating MTV. Each point lies midway between the two surfaces; `id`
 --- names the features that touch and stays the same while they do. The points describe
 --- the shapes as they are when S.ite is called: when either shape has moved since the MTV
@@ -186,6 +187,12 @@ function S.ite(mtv, out)
   local k = ops.contact(a, b, m.nx, m.ny, m.depth, m.edgeIndex, out)
   if k == 0 then return nil end
   if k == 1 and out[2] then out._spare, out[2] = out[2], nil end
+  -- (every point names its pair, as a compound's do: a reused `out` that held a compound's
+  -- points must not keep naming that compound's members)
+  for i = 1, k do
+    local p = out[i]
+    p.colliderShape, p.collidedShape = a, b
+  end
   out.count, out.nx, out.ny = k, m.nx, m.ny
   return out
 end

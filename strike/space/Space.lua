@@ -410,7 +410,7 @@ local function contacts(self, rec)
     for i = 1, c.count do
       local p = c[i]
       np = np + 1
-      ids[np], sa[np], sb[np] = p.id, p.colliderShape or false, p.collidedShape or false
+      ids[np], sa[np], sb[np] = p.id, p.colliderShape, p.collidedShape
     end
   end
   c = Space._ite(rec._m, rec._c)
@@ -418,7 +418,7 @@ local function contacts(self, rec)
   if c then
     for i = 1, c.count do
       local p = c[i]
-      local id, pa, pb, persisted = p.id, p.colliderShape or false, p.collidedShape or false, false
+      local id, pa, pb, persisted = p.id, p.colliderShape, p.collidedShape, false
       for j = 1, np do
         if ids[j] == id and sa[j] == pa and sb[j] == pb then
           persisted = true
@@ -461,7 +461,10 @@ function Space:collisions(out)
     if (not mask[i] and not mask[j] and (g == 0 or g ~= group[j]) and not pf) or allowed(self, i, j) then
       local a, b = body[i], body[j]
       local rec = active[key]
-      if rec and (rec.a ~= a or rec.b ~= b) then rec = nil end -- (a reused id: that one ended)
+      local order = rank[i] * K + rank[j]
+      -- (a record of other bodies under a reused id, or of these bodies before one of them
+      -- was removed and added again: that pair ended)
+      if rec and (rec.a ~= a or rec.b ~= b or rec._order ~= order) then rec = nil end
       local m = rec and rec._m or scratch
       if collide(a, b, m) then
         if not rec then
@@ -473,7 +476,6 @@ function Space:collisions(out)
         end
         local sensor = sensorOf[i] or sensorOf[j]
         rec.sensor, rec.mtv, rec._frame = sensor, not sensor and rec._m, frame
-        local order = rank[i] * K + rank[j]
         rec._order = order
         if order < last then sorted = false end
         last = order
@@ -741,17 +743,18 @@ local function checkRay(fname, x, y, dx, dy, maxDistance)
   return ux, uy, maxDistance
 end
 
-local cast, leavesRayCast, leafList = ray.cast, ray.leavesRayCast, Collider._leafList
+local rayCast, leavesRayCast, leafList = ray.rayCast, ray.leavesRayCast, Collider._leafList
 
--- body:rayCast for a unit direction, without the argument checks: distance, point, normal
--- and the shape hit, or nil.
-local function rayBody(b, x, y, ux, uy, maxDistance)
+-- body:rayCast without its argument checks (the same arithmetic: (dx, dy) as the caller
+-- gave it, made a unit vector once, as body:rayCast does): distance, point, normal and the
+-- shape hit, or nil.
+local function rayBody(b, x, y, dx, dy, maxDistance)
   if b._pose then
-    local d, hx, hy, nx, ny = cast(b, x, y, ux, uy, maxDistance)
+    local d, hx, hy, nx, ny = rayCast(b, x, y, dx, dy, maxDistance)
     return d, hx, hy, nx, ny, b
   end
   local leaves, n = leafList(b)
-  return leavesRayCast(leaves, n, x, y, ux, uy, maxDistance)
+  return leavesRayCast(leaves, n, x, y, dx, dy, maxDistance)
 end
 
 --- The closest body the ray from (x, y) along (dx, dy) hits within maxDistance (default
@@ -794,7 +797,7 @@ function Space:rayCast(x, y, dx, dy, maxDistance, filterArg)
     local id = ids[i]
     local b = bodies[id]
     if queryFilter(filterArg, b, layer[id]) then
-      local d, px, py, nx, ny, shape = rayBody(b, x, y, ux, uy, best)
+      local d, px, py, nx, ny, shape = rayBody(b, x, y, dx, dy, best)
       if d and (d < best or not hit or rank[id] < hitRank) then
         best, hit, hitRank, hd, hx, hy, hnx, hny, hshape = d, b, rank[id], d, px, py, nx, ny, shape
       end
@@ -836,7 +839,7 @@ function Space:rayCastAll(x, y, dx, dy, maxDistance, filterArg, out)
     local id = ids[i]
     local b = bodies[id]
     if queryFilter(filterArg, b, layer[id]) then
-      local d, px, py, nx, ny, shape = rayBody(b, x, y, ux, uy, maxT)
+      local d, px, py, nx, ny, shape = rayBody(b, x, y, dx, dy, maxT)
       if d then
         k = k + 1
         local rec = out[k]

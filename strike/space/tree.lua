@@ -37,7 +37,7 @@
 local Tree = {}
 Tree.__index = Tree
 
-local min, max, huge = math.min, math.max, math.huge
+local min, max, huge, abs = math.min, math.max, math.huge, math.abs
 local JIT = rawget(_G, 'jit') ~= nil
 
 --- Fat margin on each side, as a fraction of the box's width + height. (Measured on 8-28 px
@@ -806,6 +806,11 @@ function Tree:rayCandidates(x, y, dx, dy, maxT, ids, ts)
     else
       bx0, by0, bx1, by1 = x0[n], y0[n], x1[n], y1[n]
     end
+    -- (each box grown by a rounding's worth, relative to its coordinates and the origin's:
+    -- a point's or an edge's box has no width, and the slab arithmetic's rounding alone
+    -- could miss it, or put a box's entry past a hit exactly on its side)
+    local e = 1e-12 * (abs(bx0) + abs(by0) + abs(bx1) + abs(by1) + abs(x) + abs(y))
+    bx0, by0, bx1, by1 = bx0 - e, by0 - e, bx1 + e, by1 + e
     local lo, hi = 0, maxT
     if dx == 0 then
       if x < bx0 or x > bx1 then hi = -1 end
