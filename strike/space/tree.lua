@@ -623,7 +623,7 @@ end
 function Tree:update(id, minx, miny, maxx, maxy)
   checkId(self, 'update', id)
   checkBox('update', minx, miny, maxx, maxy)
-  return self:place(id, minx, miny, maxx, maxy)
+  self:place(id, minx, miny, maxx, maxy)
 end
 
 --- Tree:update without its checks, for a caller whose ids and boxes are known good (S.pace:
