@@ -42,8 +42,11 @@ local JIT = rawget(_G, 'jit') ~= nil
 
 --- Fat margin on each side, as a fraction of the box's width + height. (Measured on 8-28 px
 --- bodies moving 0.5-2 px a frame: 1/8 moves 12% of them out of their fat boxes each frame,
---- 1/4 8% (1.7 times the candidates, 40% less time on Lua 5.4), 1/2 5% (3.6 times).)
-local MARGIN = 0.25
+--- 1/4 8% (1.7 times the candidates, 40% less time on Lua 5.4), 1/2 5% (3.6 times). In
+--- S.pace, the tree's work plus the rest of collisions() at N = 1,000 / 5,000, Lua 5.4, in
+--- thousands of VM instructions a frame: 589 / 3,619 at 1/4, 555 / 3,322 at 0.4, 565 /
+--- 3,265 at 0.6.)
+local MARGIN = 0.4
 --- The fat box reaches this many displacements ahead of the box...
 local PREDICT = 4
 --- ...but at most this fraction of the box's width + height, per axis.
