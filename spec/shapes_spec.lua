@@ -82,6 +82,30 @@ describe('ConvexPolygon', function()
   end)
 end)
 
+describe('ConvexPolygon coordinates, given as arguments or as a table', function()
+  local unpack = table.unpack or unpack -- luacheck: ignore 113 143
+  -- (up to 64 values are read one pair at a time, more are packed first: both ways alike)
+  for _, n in ipairs({ 3, 32, 33, 40 }) do
+    it(n .. ' vertices', function()
+      local t = {}
+      for i = 1, n do
+        local a = 2 * math.pi * i / n
+        t[2 * i - 1], t[2 * i] = 10 * math.cos(a), 10 * math.sin(a)
+      end
+      local a, b = S.hapes.ConvexPolygon(unpack(t)), S.hapes.ConvexPolygon(t)
+      assert.same({ b:getVertices() }, { a:getVertices() })
+      t[2 * n] = 0 / 0
+      local ok, err = pcall(S.hapes.ConvexPolygon, unpack(t))
+      assert.is_false(ok)
+      assert.truthy(tostring(err):find(('y%d must be a finite number, got nan'):format(n), 1, true))
+      t[2 * n] = nil
+      ok, err = pcall(S.hapes.ConvexPolygon, unpack(t, 1, 2 * n - 1))
+      assert.is_false(ok)
+      assert.truthy(tostring(err):find(('got an odd number of values (%d)'):format(2 * n - 1), 1, true))
+    end)
+  end
+end)
+
 describe('Rectangle', function()
   it('is centred, with edge 1 on the min-y side', function()
     local r = S.hapes.Rectangle(10, 20, 4, 2)
