@@ -900,9 +900,4 @@ function Tree:candidates()
   return self.nCand
 end
 
-if JIT then
-  local jit = rawget(_G, 'jit')
-  for _, f in ipairs({ fixUp, rotateArea, whichSwap, bestSwap, gains, swap, rotateUp, refitChanged }) do jit.off(f) end
-end
-
 return Tree
