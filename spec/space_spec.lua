@@ -361,6 +361,29 @@ describe('S.pace', function()
       assert.equals(1, select(2, sp:collisions()))
     end)
 
+    it('a callback that raises an error leaves the space consistent for the next call', function()
+      local sp = S.pace()
+      sp:add(tagged(H.Circle(0, 0, 5), 'a'))
+      local b = sp:add(tagged(H.Circle(8, 0, 5), 'b'))
+      local c = sp:add(tagged(H.Circle(-8, 0, 5), 'c'))
+      local fail = true
+      local log = {}
+      sp:on('begin', function(x, y)
+        log[#log + 1] = 'begin:' .. x.tag .. '-' .. y.tag
+        if fail then error('game bug') end
+      end)
+      sp:on('end', function(x, y) log[#log + 1] = 'end:' .. x.tag .. '-' .. y.tag end)
+      assert.has_error(function() sp:collisions() end)
+      fail = false
+      b:translate(100, 0)
+      local list, n = sp:collisions()
+      assert.equals('begin:a-b,end:a-b', table.concat(log, ','))
+      assert.equals('a-c', pairTags(list, n))
+      sp:remove(c)
+      sp:collisions()
+      assert.equals('begin:a-b,end:a-b,end:a-c', table.concat(log, ','))
+    end)
+
     it('on and off check their arguments; off removes one registration', function()
       local sp = S.pace()
       local n = 0

@@ -58,7 +58,7 @@ function Space:new()
   self._buf, self._ids, self._ts = {}, {}, {}
   -- contact tracking: records by pair key, the touching records of the last call (in
   -- order) and of this one, and a pool of ended records
-  self._active, self._prev, self._cur, self._pool = {}, {}, {}, {}
+  self._active, self._prev, self._cur, self._pool, self._ended = {}, {}, {}, {}, {}
   self._nprev, self._frame = 0, 0
   self._scratch = MTV()
   self._on = { begin = {}, stay = {}, ['end'] = {} }
@@ -486,32 +486,45 @@ function Space:collisions(out)
   end
   trim(cur, ncur)
   if not sorted then table.sort(cur, byOrder) end
-  -- ends: the previous call's records not touching now (in the previous order)
-  local prev, on, listen = self._prev, self._on, self._listeners > 0
-  local pool = self._pool
+  -- The state first (which pairs ended, the new list, out), then the callbacks: a callback
+  -- that raises an error leaves the space as consistent as one that returns.
+  local prev, ended, ne = self._prev, self._ended, 0
   for p = 1, self._nprev do
     local rec = prev[p]
-    prev[p] = false
-    if rec._frame ~= frame then
+    if rec._frame ~= frame then -- (touching at the last call, not now: in the last call's order)
       if active[rec._key] == rec then active[rec._key] = nil end
-      if listen then emit(on['end'], rec) end
-      rec.a, rec.b, rec.mtv, rec.contacts = false, false, false, nil
-      pool[#pool + 1] = rec
+      ne = ne + 1
+      ended[ne] = rec
     end
   end
-  -- begins and stays, in pair order; the solid ones into out
-  local k = 0
+  local k, listen = 0, self._listeners > 0
   for p = 1, ncur do
     local rec = cur[p]
     prev[p] = rec
-    if listen then
-      if not rec.sensor then contacts(self, rec) else rec.contacts = nil end
-      emit(rec._since == frame and on.begin or on.stay, rec)
-    end
+    if not listen then rec.contacts = nil end -- (only computed for the callbacks)
     if not rec.sensor then
       k = k + 1
       out[k] = rec
     end
+  end
+  trim(prev, ncur)
+  self._nprev = ncur
+  trim(out, k)
+  if listen then
+    local on = self._on
+    for p = 1, ne do emit(on['end'], ended[p]) end
+    for p = 1, ncur do
+      local rec = cur[p]
+      if not rec.sensor then contacts(self, rec) else rec.contacts = nil end
+      emit(rec._since == frame and on.begin or on.stay, rec)
+    end
+  end
+  local pool = self._pool
+  for p = 1, ne do
+    local rec = ended[p]
+    ended[p] = false
+    rec.a, rec.b, rec.mtv, rec.contacts = false, false, false, nil
+    pool[#pool + 1] = rec
   end
   self._nprev = ncur
   trim(out, k)
