@@ -164,10 +164,30 @@ function VertexShape:_refresh()
     end
     self._nc, self._ns = c, s
   end
+  self._rx, self._ry, self._rk = x0, y0, k -- (the pose refreshed for: see _movedBounds)
   local r = self._round * k
   self[MINX], self[MINY], self[MAXX], self[MAXY] = minx - r, miny - r, maxx + r, maxy + r
   self[R] = r
   self._dirty = false
+end
+
+--- The bounds of a dirty shape that has only moved since its last refresh (same angle and
+--- scale), without refreshing it: the last bounds moved by the same vector, grown on every
+--- side by a rounding's worth, so they hold the bounds a refresh would compute. Returns nil
+--- when the shape has turned or scaled, or was never refreshed (then refresh it). For
+--- S.pace, which needs only a box for most bodies that move (strike/space/Space.lua).
+---@return number|nil minx
+---@return number miny
+---@return number maxx
+---@return number maxy
+function VertexShape:_movedBounds()
+  local rx = self._rx
+  if rx == nil or self._cos ~= self._nc or self._sin ~= self._ns or self._scale ~= self._rk then return nil end
+  local dx, dy = self[X] - rx, self[Y] - self._ry
+  local x0, y0, x1, y1 = self[MINX] + dx, self[MINY] + dy, self[MAXX] + dx, self[MAXY] + dy
+  -- (each bound is a coordinate plus an offset, rounded twice here and once by a refresh)
+  local e = 1e-14 * (abs(x0) + abs(y0) + abs(x1) + abs(y1) + abs(dx) + abs(dy))
+  return x0 - e, y0 - e, x1 + e, y1 + e
 end
 
 -- i is a whole number from 1 to n.

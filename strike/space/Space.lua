@@ -121,8 +121,15 @@ local function flush(self)
       queued[id] = false
       local b = body[id]
       if b._pose then -- a shape: its bounds without the getter's checks
-        if b._dirty then b:_refresh() end
-        place(tree, id, b[MINX], b[MINY], b[MAXX], b[MAXY])
+        local x0, y0, x1, y1
+        if b._dirty then
+          -- (a polygon that only moved: its last bounds, moved; its vertices wait for the
+          -- narrow phase, which refreshes only the shapes in a pair whose boxes meet)
+          local movedBounds = b._movedBounds
+          if movedBounds then x0, y0, x1, y1 = movedBounds(b) end
+          if not x0 then b:_refresh() end
+        end
+        if x0 then place(tree, id, x0, y0, x1, y1) else place(tree, id, b[MINX], b[MINY], b[MAXX], b[MAXY]) end
       else
         place(tree, id, b:getBounds())
       end
