@@ -580,6 +580,24 @@ describe('S.pace', function()
     end)
   end)
 
+  describe('one out table passed to check and rayCastAll in turn', function()
+    it('keeps their records apart: check always gives MTVs, rayCastAll distances', function()
+      local sp = S.pace()
+      local a = sp:add(H.Rectangle(0, 0, 10))
+      sp:add(H.Circle(6, 0, 3))
+      sp:add(H.Circle(-6, 0, 3))
+      local out = {}
+      assert.equals(3, select(2, sp:rayCastAll(-50, 0, 1, 0, nil, nil, out)))
+      assert.equals(1, select(2, sp:rayCastAll(-50, 0, 1, 0, 42, nil, out))) -- (two hits to the spares)
+      local list, n = sp:check(a, nil, out)
+      assert.equals(2, n)
+      for i = 1, n do near(list[i].mtv.depth, S.triking(a, list[i].b).depth) end
+      list, n = sp:rayCastAll(-50, 0, 1, 0, nil, nil, out)
+      assert.equals(3, n)
+      near(list[1].distance, 41)
+    end)
+  end)
+
   describe('allocation with out tables', function()
     setup(alloc.jitOff) -- measured interpreted on LuaJIT: see spec/helpers/alloc.lua
     teardown(alloc.jitOn)

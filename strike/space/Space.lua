@@ -548,24 +548,27 @@ local function candidates(self, x0, y0, x1, y1)
   return k
 end
 
--- Take a pair record from out's spares (out._spare) or make one.
-local function outRecord(out, k)
+-- Records that a query leaves in the caller's `out` (check's pairs, rayCastAll's hits) are
+-- reused: the one at out[k] when it is ours (it has the field `mark`), else one from
+-- out._spare, else a new one from make().
+local function outRecord(out, k, mark, make)
   local rec = out[k]
-  if type(rec) == 'table' and rec._m then return rec end
+  if type(rec) == 'table' and rec[mark] ~= nil then return rec end
   local spare = out._spare
   local n = spare and #spare or 0
-  if n > 0 then
+  if n > 0 and spare[n][mark] ~= nil then -- (an `out` passed to both kinds holds both)
     rec = spare[n]
     spare[n] = nil
   else
-    rec = { a = false, b = false, mtv = false, _m = MTV() }
+    rec = make()
   end
   out[k] = rec
   return rec
 end
 
--- Move out's records past k to its spares.
-local function trimRecords(out, k)
+-- Clear out past k, keeping our records (marked by `mark`) in out._spare, without the bodies
+-- and shapes they named (a spare must not keep them alive).
+local function trimRecords(out, k, mark)
   local i = k + 1
   local rec = out[i]
   if rec == nil then return end
@@ -575,12 +578,18 @@ local function trimRecords(out, k)
     out._spare = spare
   end
   while rec ~= nil do
-    if type(rec) == 'table' and rec._m then spare[#spare + 1] = rec end
+    if type(rec) == 'table' and rec[mark] ~= nil then
+      rec.a, rec.b, rec.body, rec.shape = nil, nil, nil, nil
+      spare[#spare + 1] = rec
+    end
     out[i] = nil
     i = i + 1
     rec = out[i]
   end
 end
+
+local function newPair() return { a = false, b = false, mtv = false, _m = MTV() } end
+local function newHit() return { _rank = 0 } end
 
 --- The solid bodies colliding with `body` (in this space or not), as records
 --- `{a = body, b = other, mtv =}` (mtv as S.triking(body, other)) in rank order. For a body
@@ -615,7 +624,7 @@ function Space:check(body, filterArg, out)
           if rank[self_id] < rank[id] then ok = allowed(self, self_id, id) else ok = allowed(self, id, self_id) end
         end
         if ok then
-          local rec = outRecord(out, k + 1)
+          local rec = outRecord(out, k + 1, '_m', newPair)
           if collide(body, other, rec._m) then
             k = k + 1
             rec.a, rec.b, rec.mtv = body, other, rec._m
@@ -624,7 +633,7 @@ function Space:check(body, filterArg, out)
       end
     end
   end
-  trimRecords(out, k)
+  trimRecords(out, k, '_m')
   return out, k
 end
 
@@ -862,34 +871,13 @@ function Space:rayCastAll(x, y, dx, dy, maxDistance, filterArg, out)
       local d, px, py, nx, ny, shape = rayBody(b, x, y, dx, dy, maxT)
       if d then
         k = k + 1
-        local rec = out[k]
-        if type(rec) ~= 'table' or rec._rank == nil then
-          local spare = out._spare
-          rec = spare and spare[#spare]
-          if rec then spare[#spare] = nil else rec = {} end
-          out[k] = rec
-        end
+        local rec = outRecord(out, k, '_rank', newHit)
         rec.body, rec.distance, rec.x, rec.y, rec.nx, rec.ny, rec.shape = b, d, px, py, nx, ny, shape
         rec._rank = rank[id]
       end
     end
   end
-  -- (records past k go to the spares; then sort the k)
-  local i = k + 1
-  while out[i] ~= nil do
-    local rec = out[i]
-    if type(rec) == 'table' and rec._rank ~= nil then
-      local spare = out._spare
-      if not spare then
-        spare = {}
-        out._spare = spare
-      end
-      rec.body, rec.shape = nil, nil
-      spare[#spare + 1] = rec
-    end
-    out[i] = nil
-    i = i + 1
-  end
+  trimRecords(out, k, '_rank')
   local sorted = true
   for j = 2, k do
     if byDistance(out[j], out[j - 1]) then
