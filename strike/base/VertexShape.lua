@@ -130,40 +130,32 @@ function VertexShape:_refresh()
   local l = self._l
   local minx, miny, maxx, maxy = huge, huge, -huge, -huge
   local sc, ss = c * k, s * k
-  if c == self._nc and s == self._ns then
-    -- The world normals are those of the angle they were made for (`_nc`, `_ns`): a move or
-    -- a scale leaves unit normals as they are, so only the vertices and offsets change.
-    -- (The same arithmetic as below, so the result does not depend on the path.)
-    for i = 1, n do
-      local q = 4 * i - 3
-      local lx, ly = l[q], l[q + 1]
-      local px, py = x0 + sc * lx - ss * ly, y0 + ss * lx + sc * ly
-      if px < minx then minx = px end
-      if px > maxx then maxx = px end
-      if py < miny then miny = py end
-      if py > maxy then maxy = py end
-      local r = STRIDE * i + BASE
-      self[r], self[r + VY], self[r + D] = px, py, self[r + NX] * px + self[r + NY] * py
-    end
-  else
-    for i = 1, n do
-      local q = 4 * i - 3
-      -- (vec.rotate's formula, written out: this loop runs for every vertex of every shape
-      -- that moved, and an interpreter pays a call per use; on Lua 5.4 the transforms row
-      -- of make bench measured 465-534k bodies/s with the calls, 563-608k without)
-      local lx, ly = l[q], l[q + 1]
-      local px, py = x0 + sc * lx - ss * ly, y0 + ss * lx + sc * ly
-      if px < minx then minx = px end
-      if px > maxx then maxx = px end
-      if py < miny then miny = py end
-      if py > maxy then maxy = py end
+  -- The world normals are those of the angle they were made for (`_nc`, `_ns`): a move or a
+  -- scale leaves unit normals as they are, so they are turned only when the angle changed.
+  local turned = c ~= self._nc or s ~= self._ns
+  for i = 1, n do
+    local q = 4 * i - 3
+    -- (vec.rotate's formula, written out: this loop runs for every vertex of every shape
+    -- that moved, and an interpreter pays a call per use; on Lua 5.4 the transforms row of
+    -- make bench measured 465-534k bodies/s with the calls, 563-608k without)
+    local lx, ly = l[q], l[q + 1]
+    local px, py = x0 + sc * lx - ss * ly, y0 + ss * lx + sc * ly
+    if px < minx then minx = px end
+    if px > maxx then maxx = px end
+    if py < miny then miny = py end
+    if py > maxy then maxy = py end
+    local r = STRIDE * i + BASE
+    local nx, ny
+    if turned then
       local mx, my = l[q + 2], l[q + 3]
-      local nx, ny = c * mx - s * my, s * mx + c * my
-      local r = STRIDE * i + BASE
-      self[r], self[r + VY], self[r + NX], self[r + NY], self[r + D] = px, py, nx, ny, nx * px + ny * py
+      nx, ny = c * mx - s * my, s * mx + c * my
+      self[r + NX], self[r + NY] = nx, ny
+    else
+      nx, ny = self[r + NX], self[r + NY]
     end
-    self._nc, self._ns = c, s
+    self[r], self[r + VY], self[r + D] = px, py, nx * px + ny * py
   end
+  self._nc, self._ns = c, s
   self._rx, self._ry, self._rk = x0, y0, k -- (the pose refreshed for: see _movedBounds)
   local r = self._round * k
   self[MINX], self[MINY], self[MAXX], self[MAXY] = minx - r, miny - r, maxx + r, maxy + r
