@@ -394,4 +394,36 @@ describe('nested collider caches, by hand', function()
     near(outer:rayCast(-2, 1, 1, 0), 17, 1e-12) -- (it starts inside A + B: its exit)
     near(S.triking(outermost, H.Rectangle(5, 4.5, 2, 5)).depth, 3, 1e-12)
   end)
+
+  -- elems' positions are made by its first use, then kept by every change of the leaves
+  it('elems before and after members are added, removed and nested', function()
+    local function leaves(c)
+      local list = {}
+      for shape in c:elems() do
+        list[#list + 1] = shape
+        assert.is_true(#list <= 10, 'elems does not end')
+      end
+      return list
+    end
+    local a, b, d = H.Circle(0, 0, 1), H.Circle(5, 0, 1), H.Circle(9, 0, 1)
+    local inner = T.Collider(b)
+    local c = T.Collider(a, inner)
+    assert.same({ a, b }, leaves(c))
+    c:add(d)
+    assert.same({ a, b, d }, leaves(c))
+    local e = H.Circle(0, 9, 1)
+    inner:add(e)
+    assert.same({ a, b, e, d }, leaves(c))
+    c:remove(1)
+    assert.same({ b, e, d }, leaves(c))
+    assert.same({ b, e }, leaves(inner))
+    -- a loop that removes the leaf it is at ends there (it used to start over, for ever)
+    local seen = 0
+    for shape in c:elems() do
+      seen = seen + 1
+      assert.is_true(seen <= 10, 'elems does not end')
+      if shape == b then inner:remove(1) end
+    end
+    assert.equals(1, seen)
+  end)
 end)

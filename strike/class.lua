@@ -50,7 +50,10 @@ end
 --- `Class(...)`: make an instance and run `Class:new(...)` on it.
 ---@return table instance
 function Object:__call(...)
-  local obj = setmetatable({}, self)
+  -- (a class may provide `_alloc()`, the empty table an instance starts as: room for the
+  -- fields it will have, see colliders/Collider.lua)
+  local alloc = self._alloc
+  local obj = setmetatable(alloc and alloc() or {}, self)
   obj:new(...)
   return obj
 end

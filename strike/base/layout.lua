@@ -21,6 +21,21 @@
 ---
 --- Everything else a shape keeps (local geometry, pose angle and scale, flags) is in named
 --- fields; a shape's integer keys are strike's alone.
+---
+--- A collider (colliders/Collider.lua) keeps its cached aggregates in its own array part
+--- too, so that moving one reads and writes a few adjacent numbers instead of a dozen
+--- fields spread over its hash part (valid while its flags say so; its integer keys are
+--- strike's alone as well):
+---
+---   slot    name              meaning
+---   1-4     MINX ... MAXY     the bounds of every leaf            (`_clean`)
+---   5-6     X, Y              the centroid                        (`_massOK`)
+---   7       CRADIUS           the radius about the centroid       (`_clean`)
+---   8       CAREA             the area of the leaves              (`_massOK`)
+---   9-10    CAX, CAY          the sums of area * centroid         (`_massOK`)
+---   11-13   CLEN, CLX, CLY    edges: the sum of lengths, and of length * midpoint
+---   14-15   CSX, CSY          the sum of the leaves' centroids (the mean of points)
+---   16      CANGLE            the angle (the sum of its rotations)
 local layout = {}
 
 --- The bounds' slots.
@@ -31,6 +46,13 @@ layout.X, layout.Y = 5, 6
 layout.R = 7
 --- Number of header slots (bounds, position, radius).
 layout.HEADER = 7
+
+--- A collider's slots (see above).
+layout.CRADIUS, layout.CAREA, layout.CAX, layout.CAY = 7, 8, 9, 10
+layout.CLEN, layout.CLX, layout.CLY, layout.CSX, layout.CSY = 11, 12, 13, 14, 15
+layout.CANGLE = 16
+--- Number of a collider's slots.
+layout.CSIZE = 16
 
 --- Slots per vertex record.
 layout.STRIDE = 5

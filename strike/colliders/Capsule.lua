@@ -5,6 +5,7 @@ local ROOT = (...):match('^(.-)%.colliders%.[^%.]+$')
 local Collider = require(ROOT .. '.colliders.Collider')
 local CapsuleShape = require(ROOT .. '.shapes.Capsule')
 local check = require(ROOT .. '.check')
+local layout = require(ROOT .. '.base.layout')
 local badSelf, badCollider, type = check.badSelf, check.badCollider, type
 
 ---@class strike.CapsuleCollider : strike.Collider
@@ -22,7 +23,7 @@ Capsule.name = 'Capsule'
 function Capsule:new(x, y, dx, dy, angle)
   if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.Capsule:new') end
   Collider.new(self, CapsuleShape(x, y, dx, dy, angle))
-  self._angle = self.shapes[1]._angle
+  self[layout.CANGLE] = self.shapes[1]._angle
 end
 
 --- Width and height (caps included), as they are now.

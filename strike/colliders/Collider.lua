@@ -15,14 +15,16 @@
 ---                                                       collider moving it           collide/compound.lua)
 ---   `_pose` (shape)       a stamp, not a flag: a new    the same                     (read by S.ite against the
 ---                         number on every move                                       MTV's `_poseA`, `_poseB`)
----   `_leavesOK`           the flat leaf list `_leaves`, invalidate(): add, remove,   refreshLeaves (via _leafList,
----     (collider)          `_leafPos`, `_nleaves`, and   consolidate                  elems, getShapeCount, the
----                         `_single` (the only leaf or                                transforms, rays, project,
----                         false; S.triking's fast path)                              containsPoint, refreshMass)
----   `_massOK`             area and centroid             invalidate(), and            refreshMass (getArea,
----     (collider)                                        Shape:_touch of any leaf     getCentroid, getAreaCentroid)
+---   `_nleaves` >= 0       the flat leaf list `_leaves`, invalidate(): add, remove,   refreshLeaves (via _leafList,
+---     (collider; -1       its length `_nleaves`,        consolidate                  elems, getShapeCount, the
+---     when stale)         `_leafPos` (made by the first                              transforms, rays, project,
+---                         elems) and `_single` (the                                  containsPoint, refreshMass)
+---                         only leaf or false;
+---                         S.triking's fast path)
+---   `_massOK`             area and centroid (slots:     invalidate(), and            refreshMass (getArea,
+---     (collider)          layout.lua)                   Shape:_touch of any leaf     getCentroid, getAreaCentroid)
 ---                                                       below it
----   `_clean` (collider)   bounds and radius             the same as `_massOK`        refresh (getBbox, getBounds,
+---   `_clean` (collider)   bounds and radius (slots)     the same as `_massOK`        refresh (getBbox, getBounds,
 ---                                                                                    getRadius, calcAreaCentroid)
 ---
 --- Invariant: when a collider's flag is false, so is that flag on every enclosing collider.
@@ -48,6 +50,10 @@ local number, positive, optPoint, fail, describe = check.number, check.positive,
   check.describe
 local badSelf, badCollider, type = check.badSelf, check.badCollider, type
 local X, Y = layout.X, layout.Y
+local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
+local CRADIUS, CAREA, CAX, CAY = layout.CRADIUS, layout.CAREA, layout.CAX, layout.CAY
+local CLEN, CLX, CLY, CSX, CSY = layout.CLEN, layout.CLX, layout.CLY, layout.CSX, layout.CSY
+local CANGLE, CSIZE = layout.CANGLE, layout.CSIZE
 
 ---@class strike.Collider : strike.Object
 ---@field shapes (strike.Shape|strike.Collider)[] the direct children, in order
@@ -65,19 +71,34 @@ local function isCollider(v) return type(v) == 'table' and getmetatable(v) ~= ni
 function Collider:new(...)
   if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.Collider:new') end
   self.shapes = {}
-  self._angle = 0
   -- (the cache fields get their slots now, so the object's fields are laid out once, at
   -- construction; see the cache protocol above)
-  self._leavesOK, self._massOK, self._clean, self._single = false, false, false, false
+  for k = 1, CSIZE do self[k] = 0 end
+  self._nleaves, self._massOK, self._clean, self._single = -1, false, false, false
   self:add(...)
+end
+
+-- LuaJIT's table.new, when there is one: an instance made with room for its slots and
+-- fields at once (no table grows while a collider is built).
+local tnew = (function()
+  local ok, new = pcall(require, 'table.new')
+  return ok and new or nil
+end)()
+
+--- The empty instance `Class(...)` fills (class.lua): a table with room for the slots and
+--- for the fields a collider in a space has.
+---@return table
+function Collider._alloc()
+  if tnew then return tnew(CSIZE, 8) end
+  return { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 }
 end
 
 -- The structure changed: clear every flag here and on every enclosing collider (and, when
 -- the walk reaches a root in a space, queue it there, as Shape:_touch does).
 local function invalidate(self)
   local p = self
-  while p and (p._leavesOK or p._massOK or p._clean) do
-    p._leavesOK, p._massOK, p._clean, p._single = false, false, false, false
+  while p and (p._nleaves >= 0 or p._massOK or p._clean) do
+    p._nleaves, p._massOK, p._clean, p._single = -1, false, false, false
     local up = p.parent
     if not up then
       local space = p._space
@@ -97,8 +118,10 @@ function Collider:add(...)
   if self._single == nil then
     -- (a collider whose constructor adds without calling Collider.new, as the original
     -- Strike's walkthrough does: its cache fields start here, see the cache protocol)
-    if self._angle == nil then self._angle = 0 end
-    self._leavesOK, self._massOK, self._clean, self._single = false, false, false, false
+    for k = 1, CSIZE do
+      if self[k] == nil then self[k] = 0 end
+    end
+    self._nleaves, self._massOK, self._clean, self._single = -1, false, false, false
   end
   for i = 1, select('#', ...) do
     local child = select(i, ...)
@@ -185,30 +208,28 @@ end
 local function refreshLeaves(self)
   local shapes = self.shapes or {}
   local leaves, pos = self._leaves, self._leafPos
-  if not leaves then leaves, pos = {}, {}; self._leaves, self._leafPos = leaves, pos end
-  for k in pairs(pos) do pos[k] = nil end
+  if not leaves then leaves = {}; self._leaves = leaves end
+  if pos then for k in pairs(pos) do pos[k] = nil end end -- (pos: made by elems, when first used)
   local nl = 0
   for i = 1, #shapes do
     local c = shapes[i]
     if c.shapes then
-      if not c._leavesOK then refreshLeaves(c) end
+      if c._nleaves < 0 then refreshLeaves(c) end
       local cl = c._leaves
       for k = 1, c._nleaves do
         nl = nl + 1
         leaves[nl] = cl[k]
-        pos[cl[k]] = nl
+        if pos then pos[cl[k]] = nl end
       end
     else
       nl = nl + 1
       leaves[nl] = c
-      pos[c] = nl
+      if pos then pos[c] = nl end
     end
   end
   for i = #leaves, nl + 1, -1 do leaves[i] = nil end
   self._nleaves = nl
-  if not self._angle then self._angle = 0 end
   self._single = nl == 1 and leaves[1]
-  self._leavesOK = true
 end
 
 --- The flat list of leaf shapes, depth first in insertion order, and its length (the
@@ -216,23 +237,23 @@ end
 ---@return strike.Shape[] leaves
 ---@return integer n
 function Collider:_leafList()
-  if not self._leavesOK then refreshLeaves(self) end
+  if self._nleaves < 0 then refreshLeaves(self) end
   return self._leaves, self._nleaves
 end
 
 -- Level 2: area and centroid, bottom-up from the children's own sums. Needs no world
 -- vertices. Edges (no area) weigh by length, used when the whole tree has no area.
 local function refreshMass(self)
-  if not self._leavesOK then refreshLeaves(self) end
+  if self._nleaves < 0 then refreshLeaves(self) end
   local shapes = self.shapes or {}
   local area, ax, ay, len, lx, ly, cnt, sx, sy = 0, 0, 0, 0, 0, 0, 0, 0, 0
   for i = 1, #shapes do
     local c = shapes[i]
     if c.shapes then
       if not c._massOK then refreshMass(c) end
-      area, ax, ay = area + c._area, ax + c._ax, ay + c._ay
-      len, lx, ly = len + c._len, lx + c._lx, ly + c._ly
-      cnt, sx, sy = cnt + c._cnt, sx + c._sx, sy + c._sy
+      area, ax, ay = area + c[CAREA], ax + c[CAX], ay + c[CAY]
+      len, lx, ly = len + c[CLEN], lx + c[CLX], ly + c[CLY]
+      cnt, sx, sy = cnt + c._nleaves, sx + c[CSX], sy + c[CSY]
     else
       local a, x, y = c:getAreaCentroid()
       if a > 0 then
@@ -244,16 +265,16 @@ local function refreshMass(self)
       cnt, sx, sy = cnt + 1, sx + x, sy + y
     end
   end
-  self._area, self._ax, self._ay, self._len, self._lx, self._ly = area, ax, ay, len, lx, ly
-  self._cnt, self._sx, self._sy = cnt, sx, sy
+  self[CAREA], self[CAX], self[CAY], self[CLEN], self[CLX], self[CLY] = area, ax, ay, len, lx, ly
+  self[CSX], self[CSY] = sx, sy -- (the count of leaves is _nleaves)
   if area > 0 then
-    self._cx, self._cy = ax / area, ay / area
+    self[X], self[Y] = ax / area, ay / area
   elseif len > 0 then
-    self._cx, self._cy = lx / len, ly / len
+    self[X], self[Y] = lx / len, ly / len
   elseif cnt > 0 then
-    self._cx, self._cy = sx / cnt, sy / cnt
+    self[X], self[Y] = sx / cnt, sy / cnt
   else
-    self._cx, self._cy = 0, 0
+    self[X], self[Y] = 0, 0
   end
   self._massOK = true
 end
@@ -274,13 +295,13 @@ local function refresh(self)
     if y1 > maxy then maxy = y1 end
   end
   if self._nleaves == 0 then minx, miny, maxx, maxy = 0, 0, 0, 0 end
-  local cx, cy, leaves, r = self._cx, self._cy, self._leaves, 0
+  local cx, cy, leaves, r = self[X], self[Y], self._leaves, 0
   for i = 1, self._nleaves do
     local d = leaves[i]:_farthest(cx, cy)
     if d > r then r = d end
   end
-  self._radius = r
-  self._minx, self._miny, self._maxx, self._maxy = minx, miny, maxx, maxy
+  self[CRADIUS] = r
+  self[MINX], self[MINY], self[MAXX], self[MAXY] = minx, miny, maxx, maxy
   self._clean = true
 end
 Collider._refresh = refresh
@@ -306,7 +327,7 @@ end
 function Collider:getArea()
   if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getArea') end
   if not self._massOK then refreshMass(self) end
-  return self._area
+  return self[CAREA]
 end
 
 --- Centroid: the area-weighted mean of the leaves' centroids; for colliders of edges
@@ -316,7 +337,7 @@ end
 function Collider:getCentroid()
   if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getCentroid') end
   if not self._massOK then refreshMass(self) end
-  return self._cx, self._cy
+  return self[X], self[Y]
 end
 
 --- Area and centroid together.
@@ -324,7 +345,7 @@ end
 function Collider:getAreaCentroid()
   if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getAreaCentroid') end
   if not self._massOK then refreshMass(self) end
-  return self:getArea(), self._cx, self._cy
+  return self:getArea(), self[X], self[Y]
 end
 
 --- Radius of the smallest circle about the centroid that holds every leaf.
@@ -332,7 +353,7 @@ end
 function Collider:getRadius()
   if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getRadius') end
   if not self._clean then refresh(self) end
-  return self._radius
+  return self[CRADIUS]
 end
 
 --- Bounds of all leaves as minimum x, minimum y, width, height; (0, 0, 0, 0) when empty.
@@ -340,7 +361,7 @@ end
 function Collider:getBbox()
   if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getBbox') end
   if not self._clean then refresh(self) end
-  return self._minx, self._miny, self._maxx - self._minx, self._maxy - self._miny
+  return self[MINX], self[MINY], self[MAXX] - self[MINX], self[MAXY] - self[MINY]
 end
 
 --- Bounds of all leaves as minimum x, minimum y, maximum x, maximum y.
@@ -348,7 +369,7 @@ end
 function Collider:getBounds()
   if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getBounds') end
   if not self._clean then refresh(self) end
-  return self._minx, self._miny, self._maxx, self._maxy
+  return self[MINX], self[MINY], self[MAXX], self[MAXY]
 end
 
 --- The angle: the sum of every rotation applied to this collider (or given to its
@@ -356,14 +377,14 @@ end
 ---@return number
 function Collider:getAngle()
   if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getAngle') end
-  return self._angle or 0
+  return self[CANGLE] or 0
 end
 
 --- Number of leaf shapes in the whole tree.
 ---@return integer
 function Collider:getShapeCount()
   if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getShapeCount') end
-  if not self._leavesOK then refreshLeaves(self) end
+  if self._nleaves < 0 then refreshLeaves(self) end
   return self._nleaves
 end
 
@@ -375,8 +396,15 @@ function Collider:getRoot()
 end
 
 -- Stateless leaf iterator: the control variable is the previous leaf.
+-- (a previous leaf no longer in the collider, removed by the loop's body, ends the loop:
+-- starting over would never end)
 local function elemsIter(self, prev)
-  local i = prev and self._leafPos[prev] or 0
+  if self._nleaves < 0 then refreshLeaves(self) end
+  local i = 0
+  if prev then
+    i = self._leafPos[prev]
+    if not i then return nil end
+  end
   return self._leaves[i + 1]
 end
 
@@ -385,7 +413,12 @@ end
 ---@return function, strike.Collider, nil
 function Collider:elems()
   if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:elems') end
-  if not self._leavesOK then refreshLeaves(self) end
+  if self._nleaves < 0 then refreshLeaves(self) end
+  if not self._leafPos then -- (the leaves' positions, kept up to date by refreshLeaves from now on)
+    local pos, leaves = {}, self._leaves
+    for i = 1, self._nleaves do pos[leaves[i]] = i end
+    self._leafPos = pos
+  end
   return elemsIter, self, nil
 end
 
@@ -394,7 +427,7 @@ end
 ---@return function
 function Collider:ipairs()
   if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:ipairs') end
-  if not self._leavesOK then refreshLeaves(self) end
+  if self._nleaves < 0 then refreshLeaves(self) end
   local leaves, i = self._leaves, 0
   return function()
     i = i + 1
@@ -416,7 +449,7 @@ function Collider:project(nx, ny)
   if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:project') end
   number(nx, 'strike.Collider:project', 'nx')
   number(ny, 'strike.Collider:project', 'ny')
-  if not self._leavesOK then refreshLeaves(self) end
+  if self._nleaves < 0 then refreshLeaves(self) end
   local lo, hi = huge, -huge
   local leaves = self._leaves
   for i = 1, self._nleaves do
@@ -437,7 +470,7 @@ end
 function Collider:containsPoint(x, y)
   if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:containsPoint') end
   x, y = Shape._point(x, y, 'strike.Collider:containsPoint')
-  if not self._leavesOK then refreshLeaves(self) end
+  if self._nleaves < 0 then refreshLeaves(self) end
   local leaves, n = self._leaves, self._nleaves
   for i = 1, n do
     if leaves[i]:containsPoint(x, y) then return true end
@@ -472,7 +505,7 @@ end
 -- transforms apply, Shape._checkPose), raise an error at the caller's line before anything
 -- moves.
 local function eachLeaf(self, fname, pose, a, b, c, turn)
-  if not self._leavesOK then refreshLeaves(self) end
+  if self._nleaves < 0 then refreshLeaves(self) end
   local leaves, n = self._leaves, self._nleaves
   for i = 1, n do
     local s = leaves[i]
@@ -487,7 +520,7 @@ local function eachLeaf(self, fname, pose, a, b, c, turn)
 end
 
 local function addAngle(self, a)
-  self._angle = (self._angle or 0) + a
+  self[CANGLE] = (self[CANGLE] or 0) + a
   local shapes = self.shapes or {}
   for i = 1, #shapes do
     if shapes[i].shapes then addAngle(shapes[i], a) end
@@ -501,16 +534,18 @@ end
 -- that recomputing them takes; its leaves' own world data still refresh when first used.
 local function shift(c, dx, dy, mass, bounds)
   if mass then
-    c._cx, c._cy = c._cx + dx, c._cy + dy
-    c._ax, c._ay = c._ax + c._area * dx, c._ay + c._area * dy
-    c._lx, c._ly = c._lx + c._len * dx, c._ly + c._len * dy
-    c._sx, c._sy = c._sx + c._cnt * dx, c._sy + c._cnt * dy
+    c[X], c[Y] = c[X] + dx, c[Y] + dy
+    c[CAX], c[CAY] = c[CAX] + c[CAREA] * dx, c[CAY] + c[CAREA] * dy
+    c[CLX], c[CLY] = c[CLX] + c[CLEN] * dx, c[CLY] + c[CLEN] * dy
+    c[CSX], c[CSY] = c[CSX] + c._nleaves * dx, c[CSY] + c._nleaves * dy
     c._massOK = true
   end
   if bounds then
-    c._minx, c._miny, c._maxx, c._maxy = c._minx + dx, c._miny + dy, c._maxx + dx, c._maxy + dy
+    c[MINX], c[MINY], c[MAXX], c[MAXY] = c[MINX] + dx, c[MINY] + dy, c[MAXX] + dx, c[MAXY] + dy
     c._clean = true
   end
+  local single = c._single
+  if single and single.parent == c then return end -- (one leaf, a child: no collider below)
   local shapes = c.shapes
   for i = 1, #shapes do
     local child = shapes[i]
@@ -520,7 +555,7 @@ end
 
 -- Translate every leaf by (dx, dy), keeping the caches that a translation only shifts.
 local function translateBy(self, dx, dy, fname)
-  if not self._leavesOK then refreshLeaves(self) end
+  if self._nleaves < 0 then refreshLeaves(self) end
   local mass, bounds = self._massOK, self._clean
   local s = self._single
   if s then -- (one leaf, the usual body: eachLeaf without its loops and calls)
@@ -583,7 +618,7 @@ function Collider:rotateTo(angle, refx, refy)
   number(angle, 'strike.Collider:rotateTo', 'angle')
   refx, refy = optPoint(refx, refy, 'strike.Collider:rotateTo')
   if not refx then refx, refy = self:getCentroid() end
-  local a = angle - (self._angle or 0)
+  local a = angle - (self[CANGLE] or 0)
   eachLeaf(self, 'strike.Collider:rotateTo', rotated, a, refx, refy, a)
   addAngle(self, a)
   return self
@@ -620,7 +655,7 @@ function Collider:copy(x, y, angle)
       c[k] = v
     end
   end
-  c._leavesOK, c._massOK, c._clean, c._single, c.shapes = false, false, false, false, {}
+  c._nleaves, c._massOK, c._clean, c._single, c.shapes = -1, false, false, false, {}
   local shapes = self.shapes or {}
   for i = 1, #shapes do
     local child = shapes[i]:copy()
@@ -699,7 +734,7 @@ local leavesIntersections, leavesIntersect, leavesRayCast, leavesSegmentCast = r
 function Collider:rayIntersections(x, y, dx, dy)
   if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:rayIntersections') end
   checkRay('strike.Collider:rayIntersections', x, y, dx, dy)
-  if not self._leavesOK then refreshLeaves(self) end
+  if self._nleaves < 0 then refreshLeaves(self) end
   return leavesIntersections(self._leaves, self._nleaves, x, y, dx, dy)
 end
 
@@ -714,7 +749,7 @@ end
 function Collider:rayIntersects(x, y, dx, dy)
   if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:rayIntersects') end
   checkRay('strike.Collider:rayIntersects', x, y, dx, dy)
-  if not self._leavesOK then refreshLeaves(self) end
+  if self._nleaves < 0 then refreshLeaves(self) end
   return leavesIntersect(self._leaves, self._nleaves, x, y, dx, dy)
 end
 
@@ -733,7 +768,7 @@ function Collider:rayCast(x, y, dx, dy, maxDistance)
   if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:rayCast') end
   checkRay('strike.Collider:rayCast', x, y, dx, dy)
   maxDistance = checkMax('strike.Collider:rayCast', maxDistance)
-  if not self._leavesOK then refreshLeaves(self) end
+  if self._nleaves < 0 then refreshLeaves(self) end
   return leavesRayCast(self._leaves, self._nleaves, x, y, dx, dy, maxDistance)
 end
 
@@ -747,7 +782,7 @@ end
 function Collider:segmentCast(x1, y1, x2, y2)
   if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:segmentCast') end
   checkSegment('strike.Collider:segmentCast', x1, y1, x2, y2)
-  if not self._leavesOK then refreshLeaves(self) end
+  if self._nleaves < 0 then refreshLeaves(self) end
   return leavesSegmentCast(self._leaves, self._nleaves, x1, y1, x2, y2)
 end
 

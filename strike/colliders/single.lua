@@ -4,6 +4,7 @@
 local ROOT = (...):match('^(.-)%.colliders%.[^%.]+$')
 local Collider = require(ROOT .. '.colliders.Collider')
 local check = require(ROOT .. '.check')
+local layout = require(ROOT .. '.base.layout')
 
 --- Make the single-shape collider class for the shape registered as `name`.
 ---@param shapes table the S.hapes registry
@@ -19,7 +20,7 @@ return function(shapes, name)
     local ShapeClass = shapes[name]
     if not ShapeClass then check.fail(('strike.trikers.%s: S.hapes.%s is no longer registered'):format(name, name)) end
     Collider.new(self, ShapeClass(...))
-    self._angle = self.shapes[1]._angle
+    self[layout.CANGLE] = self.shapes[1]._angle
   end
   return Single
 end
