@@ -591,12 +591,12 @@ local function fatten(self, id, minx, miny, maxx, maxy, dx, dy)
   local m = s * MARGIN
   local x0, y0, x1, y1 = minx - m, miny - m, maxx + m, maxy + m
   local limit = s * PREDICT_LIMIT
-  dx, dy = dx * PREDICT, dy * PREDICT
-  if dx > limit then dx = limit elseif dx < -limit then dx = -limit end
-  if dy > limit then dy = limit elseif dy < -limit then dy = -limit end
-  if dx > 0 then x1 = x1 + dx else x0 = x0 + dx end
-  if dy > 0 then y1 = y1 + dy else y0 = y0 + dy end
-  self.fx0[id], self.fy0[id], self.fx1[id], self.fy1[id] = x0, y0, x1, y1
+  -- (no branches: LuaJIT compiles min and max to single instructions, and a branch here,
+  -- in the loop that places every moved body, made side traces it could not compile,
+  -- "register coalescing too complex", hundreds of times a second at N = 5,000)
+  dx, dy = min(max(dx * PREDICT, -limit), limit), min(max(dy * PREDICT, -limit), limit)
+  self.fx0[id], self.fy0[id] = x0 + min(dx, 0), y0 + min(dy, 0)
+  self.fx1[id], self.fy1[id] = x1 + max(dx, 0), y1 + max(dy, 0)
 end
 
 --- Add a proxy for the box (closed: a box of zero size is a point or a segment).
