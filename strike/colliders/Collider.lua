@@ -208,8 +208,18 @@ end
 local function refreshLeaves(self)
   local shapes = self.shapes or {}
   local leaves, pos = self._leaves, self._leafPos
-  if not leaves then leaves = {}; self._leaves = leaves end
   if pos then for k in pairs(pos) do pos[k] = nil end end -- (pos: made by elems, when first used)
+  local nested = false
+  for i = 1, #shapes do
+    if shapes[i].shapes then nested = true break end
+  end
+  if not nested then -- (the children are the leaves: the list is `shapes` itself, no copy)
+    local nl = #shapes
+    if pos then for i = 1, nl do pos[shapes[i]] = i end end
+    self._leaves, self._nleaves, self._single = shapes, nl, nl == 1 and shapes[1]
+    return
+  end
+  if not leaves or leaves == shapes then leaves = {}; self._leaves = leaves end
   local nl = 0
   for i = 1, #shapes do
     local c = shapes[i]
