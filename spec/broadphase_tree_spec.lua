@@ -80,8 +80,68 @@ local function randomBox(rng, cx, cy, side)
   return x, y, x + w, y + h
 end
 
+-- Where the ray (x, y) + t (ux, uy) enters box a within [0, maxT], by the slab test without
+-- the tree's padding; nil when it misses.
+local function oracleEntry(o, a, x, y, ux, uy, maxT)
+  local lo, hi = 0, maxT
+  for axis = 1, 2 do
+    local p, u, b0, b1 = x, ux, o.x0[a], o.x1[a]
+    if axis == 2 then p, u, b0, b1 = y, uy, o.y0[a], o.y1[a] end
+    local inv = 1 / u
+    if inv == math.huge or inv == -math.huge then
+      if p < b0 or p > b1 then return nil end
+    else
+      local t1, t2 = (b0 - p) * inv, (b1 - p) * inv
+      if t1 > t2 then t1, t2 = t2, t1 end
+      if t1 > lo then lo = t1 end
+      if t2 < hi then hi = t2 end
+    end
+  end
+  if lo <= hi then return lo end
+  return nil
+end
+
+-- A random ray against the tree: rayCandidates gives every box the oracle's ray enters, and
+-- rayVisit, whose visitor takes every third box's entry as a hit, visits every box entered
+-- before the best hit it ends with, which is the oracle's nearest such entry or nearer (the
+-- tree pads boxes by a rounding's worth).
+local function checkRay(tree, o, rng, cx, cy, side, seed)
+  local span = math.abs(side)
+  local x, y = cx + rng:range(-0.1, 1.1) * span, cy + rng:range(-0.1, 1.1) * span
+  local a = rng:range(-math.pi, math.pi)
+  local ux, uy = math.cos(a), math.sin(a)
+  if rng:int(1, 8) == 1 then ux, uy = 0, (rng:int(0, 1) * 2 - 1) end -- along an axis
+  local maxT = rng:range(0, 1.5) * span
+  local msg = ('ray from %s, %s along %s, %s (seed %d: STRIKE_SEED=%d reproduces)'):format(x, y, ux, uy, seed, seed)
+  local ids, ts = {}, {}
+  local k = tree:rayCandidates(x, y, ux, uy, maxT, ids, ts)
+  local found = {}
+  for i = 1, k do found[ids[i]] = true end
+  local visited, best = {}, maxT
+  tree:rayVisit(x, y, ux, uy, maxT, function(ctx, id, t, limit)
+    assert(ctx == o, msg .. ': the context')
+    assert(o.live[id] and not visited[id], msg .. ': a proxy visited twice, or not in the tree')
+    assert(t <= limit and limit == best, msg .. ': a box beyond the best hit so far')
+    visited[id] = true
+    if id % 3 == 0 and t < best then best = t end
+    return best
+  end, o)
+  local nearest = maxT
+  for id = 1, o.top do
+    if o.live[id] then
+      local t = oracleEntry(o, id, x, y, ux, uy, maxT)
+      if t then
+        assert(found[id], msg .. (': rayCandidates missed box %d, entered at %s'):format(id, t))
+        if t < best then assert(visited[id], msg .. (': rayVisit missed box %d, entered at %s'):format(id, t)) end
+        if id % 3 == 0 and t < nearest then nearest = t end
+      end
+    end
+  end
+  assert(best <= nearest, msg .. (': the best hit %s, the oracle\'s %s'):format(best, nearest))
+end
+
 -- Run a random world: `rounds` rounds of inserts, moves and removes, checking pairs after each
--- and a few queries. Returns the tree's height at the end.
+-- and a few queries and rays. Returns the tree's height at the end.
 local function run(seed, cx, cy, side, rounds)
   local rng = PRNG.new(seed)
   local tree, o = Tree.new(), newOracle()
@@ -133,6 +193,7 @@ local function run(seed, cx, cy, side, rounds)
       local k = tree:query(x0, y0, x1, y1, out)
       sameList(out, k, 1, oracleQuery(o, x0, y0, x1, y1), 'query', seed)
     end
+    for _ = 1, 4 do checkRay(tree, o, rng, cx, cy, side, seed) end
     if tree:depth() > maxDepth then maxDepth = tree:depth() end
   end
   return tree, #ids, maxDepth

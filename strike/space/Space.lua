@@ -65,6 +65,9 @@ function Space:new()
   self._listeners = 0
   self._pairFilter = false
   self._probe = false -- the rectangle of queryRect, made on first use
+  -- rayCast's ray and best hit so far (see rayVisit)
+  self._ray = { x = 0, y = 0, dx = 0, dy = 0, filter = false, hit = false, rank = 0, d = 0, hx = 0, hy = 0, nx = 0,
+    ny = 0, shape = false }
 end
 
 local function isSpace(v) return type(v) == 'table' and v._tree ~= nil and getmetatable(v) ~= nil end
@@ -786,6 +789,24 @@ local function rayBody(b, x, y, dx, dy, maxDistance)
   return leavesRayCast(leaves, n, x, y, dx, dy, maxDistance)
 end
 
+-- rayCast's visitor (strike/space/tree.lua, rayVisit): test body `id`, entered at t, and
+-- keep its hit in self._ray when it is nearer than the best so far, or as near and added
+-- earlier; return the distance to beat.
+local function rayVisit(self, id, _, best)
+  local state = self._ray
+  local b = self._body[id]
+  if queryFilter(state.filter, b, self._layer[id]) then
+    local d, px, py, nx, ny, shape = rayBody(b, state.x, state.y, state.dx, state.dy, best)
+    local rank = self._rank[id]
+    if d and (d < best or not state.hit or rank < state.rank) then
+      state.hit, state.rank, state.d, state.shape = b, rank, d, shape
+      state.hx, state.hy, state.nx, state.ny = px, py, nx, ny
+      return d
+    end
+  end
+  return best
+end
+
 --- The closest body the ray from (x, y) along (dx, dy) hits within maxDistance (default
 --- math.huge; dx, dy need not be a unit vector, distances are in units of length): body,
 --- distance, hit point, unit normal and the shape hit; nil when none. Ties go to the body
@@ -807,33 +828,13 @@ function Space:rayCast(x, y, dx, dy, maxDistance, filterArg)
   if not isSpace(self) then badSelf(self, 'strike.Space:rayCast') end
   local ux, uy, maxT = checkRay('strike.Space:rayCast', x, y, dx, dy, maxDistance)
   checkQuery(filterArg, 'strike.Space:rayCast', 6)
-  flush(self)
-  local ids, ts = self._ids, self._ts
-  local k = self._tree:rayCandidates(x, y, ux, uy, maxT, ids, ts)
-  for i = 2, k do -- (insertion sort by entry distance: a handful of candidates)
-    local id, t = ids[i], ts[i]
-    local j = i - 1
-    while j >= 1 and ts[j] > t do
-      ids[j + 1], ts[j + 1] = ids[j], ts[j]
-      j = j - 1
-    end
-    ids[j + 1], ts[j + 1] = id, t
-  end
-  local bodies, layer, rank = self._body, self._layer, self._rank
-  local best, hit, hitRank, hd, hx, hy, hnx, hny, hshape = maxT, nil, 0, 0, 0, 0, 0, 0, nil
-  for i = 1, k do
-    if ts[i] > best then break end -- (every box after this one starts beyond the best hit)
-    local id = ids[i]
-    local b = bodies[id]
-    if queryFilter(filterArg, b, layer[id]) then
-      local d, px, py, nx, ny, shape = rayBody(b, x, y, dx, dy, best)
-      if d and (d < best or not hit or rank[id] < hitRank) then
-        best, hit, hitRank, hd, hx, hy, hnx, hny, hshape = d, b, rank[id], d, px, py, nx, ny, shape
-      end
-    end
-  end
+  local state = self._ray
+  state.x, state.y, state.dx, state.dy, state.filter, state.hit = x, y, dx, dy, filterArg, false
+  self._tree:rayVisit(x, y, ux, uy, maxT, rayVisit, self)
+  local hit = state.hit
   if not hit then return nil end
-  return hit, hd, hx, hy, hnx, hny, hshape
+  state.hit, state.filter = false, false -- (the state keeps nothing alive)
+  return hit, state.d, state.hx, state.hy, state.nx, state.ny, state.shape
 end
 
 local function byDistance(r1, r2)

@@ -86,6 +86,7 @@ function Tree.new()
     da = {}, db = {}, -- the other buffer of the merge
     ka = {}, kb = {}, ta = {}, tb = {}, histogram = {}, -- new pairs, radix sort scratch
     stack = {}, -- scratch
+    tstack = {}, -- scratch: rayVisit's entry distances
   }, Tree)
 end
 
@@ -781,9 +782,8 @@ end
 --- The proxies whose exact boxes the ray from (x, y) along (dx, dy) reaches within
 --- [0, maxT]: their ids into `ids` and where the ray enters each box into `ts` (0 when it
 --- starts inside), in no particular order; returns their number. The slab test (Kay and
---- Kajiya, 1986), a zero direction component tested on its own (0 * inf is NaN). The shapes'
---- own ray tests run in the caller's loop, not here: inlined into this walk, their traces
---- held too many live values for LuaJIT ("register coalescing too complex").
+--- Kajiya, 1986), a zero direction component tested on its own (0 * inf is NaN). For
+--- every body a ray crosses (S.pace's rayCastAll); a closest hit is rayVisit's.
 ---@param x number
 ---@param y number
 ---@param dx number
@@ -799,8 +799,14 @@ function Tree:rayCandidates(x, y, dx, dy, maxT, ids, ts)
   local x0, y0, x1, y1 = self.nx0, self.ny0, self.nx1, self.ny1
   local px0, py0, px1, py1 = self.px0, self.py0, self.px1, self.py1
   local ix, iy = 1 / dx, 1 / dy
+  local root = self.root
+  -- (every box grown by a rounding's worth, relative to the coordinates and the origin's: a
+  -- point's or an edge's box has no width, and the slab arithmetic's rounding alone could
+  -- miss it, or put a box's entry past a hit exactly on its side. One pad for the whole
+  -- walk, from the root's box, which holds every box below it: at least each box's own.)
+  local e = 1e-12 * (2 * max(abs(x0[root]), abs(x1[root])) + 2 * max(abs(y0[root]), abs(y1[root])) + abs(x) + abs(y))
   local stack, top, k = self.stack, 1, 0
-  stack[1] = self.root
+  stack[1] = root
   while top > 0 do
     local n = stack[top]
     top = top - 1
@@ -808,15 +814,10 @@ function Tree:rayCandidates(x, y, dx, dy, maxT, ids, ts)
     local bx0, by0, bx1, by1
     if a == 0 then
       local id = proxyOf[n]
-      bx0, by0, bx1, by1 = px0[id], py0[id], px1[id], py1[id]
+      bx0, by0, bx1, by1 = px0[id] - e, py0[id] - e, px1[id] + e, py1[id] + e
     else
-      bx0, by0, bx1, by1 = x0[n], y0[n], x1[n], y1[n]
+      bx0, by0, bx1, by1 = x0[n] - e, y0[n] - e, x1[n] + e, y1[n] + e
     end
-    -- (each box grown by a rounding's worth, relative to its coordinates and the origin's:
-    -- a point's or an edge's box has no width, and the slab arithmetic's rounding alone
-    -- could miss it, or put a box's entry past a hit exactly on its side)
-    local e = 1e-12 * (abs(bx0) + abs(by0) + abs(bx1) + abs(by1) + abs(x) + abs(y))
-    bx0, by0, bx1, by1 = bx0 - e, by0 - e, bx1 + e, by1 + e
     local lo, hi = 0, maxT
     if dx == 0 then
       if x < bx0 or x > bx1 then hi = -1 end
@@ -845,6 +846,94 @@ function Tree:rayCandidates(x, y, dx, dy, maxT, ids, ts)
     end
   end
   return k
+end
+
+-- Where the ray (x, y) + t (dx, dy), 1 / dx = ix, 1 / dy = iy, enters the box grown by e,
+-- if it does so within [0, maxT]; else -1. The slab test of rayCandidates, without
+-- branches but for a direction parallel to an axis (zx, zy: its x or y component is 0, or
+-- so small that its inverse is infinite), which LuaJIT compiles into one guard per ray:
+-- with the branches, its side traces failed ("register coalescing too complex").
+local function entry(bx0, by0, bx1, by1, e, x, y, zx, zy, ix, iy, maxT)
+  bx0, by0, bx1, by1 = bx0 - e, by0 - e, bx1 + e, by1 + e
+  local lo, hi = 0, maxT
+  if zx then
+    if x < bx0 or x > bx1 then return -1 end
+  else
+    local t1, t2 = (bx0 - x) * ix, (bx1 - x) * ix
+    lo, hi = max(lo, min(t1, t2)), min(hi, max(t1, t2))
+  end
+  if zy then
+    if y < by0 or y > by1 then return -1 end
+  else
+    local t1, t2 = (by0 - y) * iy, (by1 - y) * iy
+    lo, hi = max(lo, min(t1, t2)), min(hi, max(t1, t2))
+  end
+  if lo <= hi then return lo end
+  return -1
+end
+
+--- The proxies whose exact boxes the ray reaches, nearer boxes first, for a closest hit:
+--- `visit(ctx, id, t, maxT)` is called with each proxy whose box the ray enters at t <=
+--- maxT, and returns the new maxT (the distance of the best hit so far, or maxT as it
+--- was); boxes entered beyond it are not visited, nor is what is below them. The walk
+--- descends into the nearer child first. Every proxy whose box the ray enters within the
+--- final maxT is visited (what the caller's ties need); others may be too. Boxes are grown
+--- as rayCandidates grows them.
+---@param x number
+---@param y number
+---@param dx number
+---@param dy number
+---@param maxT number
+---@param visit fun(ctx: any, id: integer, t: number, maxT: number): number
+---@param ctx any
+function Tree:rayVisit(x, y, dx, dy, maxT, visit, ctx)
+  flush(self)
+  local root = self.root
+  if root == 0 then return end
+  local c1, c2, proxyOf = self.child1, self.child2, self.proxyOf
+  local x0, y0, x1, y1 = self.nx0, self.ny0, self.nx1, self.ny1
+  local px0, py0, px1, py1 = self.px0, self.py0, self.px1, self.py1
+  local ix, iy = 1 / dx, 1 / dy
+  local zx, zy = ix == huge or ix == -huge, iy == huge or iy == -huge
+  local e = 1e-12 * (2 * max(abs(x0[root]), abs(x1[root])) + 2 * max(abs(y0[root]), abs(y1[root])) + abs(x) + abs(y))
+  local t = entry(x0[root], y0[root], x1[root], y1[root], e, x, y, zx, zy, ix, iy, maxT)
+  if t < 0 then return end
+  local stack, ts, top = self.stack, self.tstack, 1
+  stack[1], ts[1] = root, t
+  while top > 0 do
+    local n, tn = stack[top], ts[top]
+    top = top - 1
+    if tn <= maxT then
+      local a = c1[n]
+      if a == 0 then
+        maxT = visit(ctx, proxyOf[n], tn, maxT)
+      else
+        local b = c2[n]
+        local ta, tb
+        if c1[a] == 0 then
+          local id = proxyOf[a]
+          ta = entry(px0[id], py0[id], px1[id], py1[id], e, x, y, zx, zy, ix, iy, maxT)
+        else
+          ta = entry(x0[a], y0[a], x1[a], y1[a], e, x, y, zx, zy, ix, iy, maxT)
+        end
+        if c1[b] == 0 then
+          local id = proxyOf[b]
+          tb = entry(px0[id], py0[id], px1[id], py1[id], e, x, y, zx, zy, ix, iy, maxT)
+        else
+          tb = entry(x0[b], y0[b], x1[b], y1[b], e, x, y, zx, zy, ix, iy, maxT)
+        end
+        if ta > tb then a, b, ta, tb = b, a, tb, ta end -- (a: the nearer, popped first)
+        if tb >= 0 then
+          top = top + 1
+          stack[top], ts[top] = b, tb
+        end
+        if ta >= 0 then
+          top = top + 1
+          stack[top], ts[top] = a, ta
+        end
+      end
+    end
+  end
 end
 
 --- Visit every node: calls fn(ctx, minx, miny, maxx, maxy, depth, isLeaf) for each (fat boxes
