@@ -15,6 +15,7 @@ local layout = require(ROOT .. '.base.layout')
 local vec = require(ROOT .. '.vec')
 local limits = require(ROOT .. '.limits')
 local kinds = require(ROOT .. '.collide.dispatch').kind
+local tnew = require(ROOT .. '.compat').tableNew
 
 local X, Y = layout.X, layout.Y
 local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
@@ -92,6 +93,15 @@ end
 ---@param x number
 ---@param y number
 function Shape:_placeCentroid(x, y) self[X], self[Y] = x + 0.0, y + 0.0 end
+
+--- The empty instance `Class(...)` fills (class.lua): room for the header's slots and for
+--- the fields of a shape, so that no table grows while it is built. Kinds with vertex
+--- records ask for more (VertexShape).
+---@return table
+function Shape._alloc()
+  if tnew then return tnew(layout.HEADER, 16) end
+  return { 0, 0, 0, 0, 0, 0, 0 }
+end
 
 --- The shortest length of the shape's local geometry (unscaled): a polygon's or an edge's
 --- shortest edge, a circle's radius; 0 when it has none (a point). With `_radius` (the

@@ -39,6 +39,7 @@ local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
 local layout = require(ROOT .. '.base.layout')
 local limits = require(ROOT .. '.limits')
+local tnew = require(ROOT .. '.compat').tableNew
 
 local MINX, MINY, MAXX, MAXY, R = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY, layout.R
 local X, Y = layout.X, layout.Y
@@ -55,6 +56,21 @@ local VertexShape = Shape:extend()
 VertexShape.kind = 'polygon'
 VertexShape.name = 'VertexShape'
 VertexShape._shortName = 'shortest edge'
+
+--- The empty instance `Class(...)` fills (class.lua): room for the slots of up to 5 vertices
+--- (a polygon with more grows once) and for a polygon's fields.
+---@return table
+function VertexShape._alloc()
+  if tnew then return tnew(32, 32) end
+  return { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 }
+end
+
+--- The empty instance of a shape with two vertex records (edges, capsules, chain segments).
+---@return table
+function VertexShape._alloc2()
+  if tnew then return tnew(17, 32) end
+  return { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 }
+end
 
 -- Normals this close to antiparallel are made exactly antiparallel (a change far below
 -- any coordinate's rounding noise), so that opposite faces can share one projection.

@@ -39,7 +39,7 @@ local ROOT = (...):match('^(.-)%.colliders%.[^%.]+$')
 local Object = require(ROOT .. '.class')
 local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
-local unpack = require(ROOT .. '.compat').unpack
+local unpack, tnew = require(ROOT .. '.compat').unpack, require(ROOT .. '.compat').tableNew
 local rotate = require(ROOT .. '.vec').rotate
 local checkPose = Shape._checkPose
 local layout = require(ROOT .. '.base.layout')
@@ -77,13 +77,6 @@ function Collider:new(...)
   self._nleaves, self._massOK, self._clean, self._single = -1, false, false, false
   self:add(...)
 end
-
--- LuaJIT's table.new, when there is one: an instance made with room for its slots and
--- fields at once (no table grows while a collider is built).
-local tnew = (function()
-  local ok, new = pcall(require, 'table.new')
-  return ok and new or nil
-end)()
 
 --- The empty instance `Class(...)` fills (class.lua): a table with room for the slots and
 --- for the fields a collider in a space has.

@@ -25,6 +25,20 @@ end
 ---@return integer[]
 function hull.order(xs, ys, n)
   local idx = {}
+  if n <= 16 then -- (a few points, a polygon's: insertion sort, the same order without a closure)
+    for i = 1, n do
+      local x, y, j = xs[i], ys[i], i - 1
+      while j >= 1 do
+        local b = idx[j]
+        local xb = xs[b]
+        if xb < x or (xb == x and ys[b] <= y) then break end -- (b before i: equal points keep their order)
+        idx[j + 1] = b
+        j = j - 1
+      end
+      idx[j + 1] = i
+    end
+    return idx
+  end
   for i = 1, n do idx[i] = i end
   table.sort(idx, function(a, b)
     local xa, xb = xs[a], xs[b]
@@ -84,6 +98,10 @@ end
 ---@param y number
 ---@return boolean
 function hull.strictlyInside(hx, hy, h, x, y)
+  for i = 1, h do -- (first without the tolerance: a hull vertex is on its own edge, c = 0)
+    local j = i < h and i + 1 or 1
+    if (hx[j] - hx[i]) * (y - hy[i]) - (hy[j] - hy[i]) * (x - hx[i]) <= 0 then return false end
+  end
   for i = 1, h do
     local j = i < h and i + 1 or 1
     local ex, ey = hx[j] - hx[i], hy[j] - hy[i]
@@ -92,6 +110,14 @@ function hull.strictlyInside(hx, hy, h, x, y)
     if c <= EPS * sqrt(ex * ex + ey * ey) * sqrt(px * px + py * py) then return false end
   end
   return true
+end
+
+-- Reverse entries a..b of both lists in place.
+local function reverse(hx, hy, a, b)
+  while a < b do
+    hx[a], hx[b], hy[a], hy[b] = hx[b], hx[a], hy[b], hy[a]
+    a, b = a + 1, b - 1
+  end
 end
 
 --- Rotate the hull in place so that it starts at the vertex equal to (x, y), if any.
@@ -106,12 +132,10 @@ function hull.startAt(hx, hy, h, x, y)
     if hx[i] == x and hy[i] == y then s = i break end
   end
   if not s or s == 1 then return end
-  local tx, ty = {}, {}
-  for i = 1, h do
-    local j = (i + s - 2) % h + 1
-    tx[i], ty[i] = hx[j], hy[j]
-  end
-  for i = 1, h do hx[i], hy[i] = tx[i], ty[i] end
+  -- (in place, by three reversals: 1..s-1, s..h, then the whole)
+  reverse(hx, hy, 1, s - 1)
+  reverse(hx, hy, s, h)
+  reverse(hx, hy, 1, h)
 end
 
 return hull

@@ -14,6 +14,7 @@ local MIN_LENGTH, MAX_LENGTH = limits.MIN_LENGTH, limits.MAX_LENGTH
 ---@class strike.Capsule : strike.VertexShape
 local Capsule = VertexShape:extend()
 Capsule.name = 'Capsule'
+Capsule._alloc = VertexShape._alloc2
 Capsule._shortName = 'shortest length (the caps\' radius, or the straight part)'
 
 -- Raise an error at the caller's line: `what` (value v) is out of strike's limits on

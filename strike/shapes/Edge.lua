@@ -13,6 +13,7 @@ local MIN_LENGTH, MAX_LENGTH = limits.MIN_LENGTH, limits.MAX_LENGTH
 ---@class strike.Edge : strike.VertexShape
 local Edge = VertexShape:extend()
 Edge.name = 'Edge'
+Edge._alloc = VertexShape._alloc2
 
 --- Raise an error at the caller's line unless the segment from (x1, y1) to (x2, y2) (finite
 --- coordinates) has a length strike accepts (limits.lua): at least MIN_LENGTH (the test
