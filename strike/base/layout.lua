@@ -30,7 +30,8 @@
 ---   slot    name              meaning
 ---   1-4     MINX ... MAXY     the bounds of every leaf            (`_clean`)
 ---   5-6     X, Y              the centroid                        (`_massOK`)
----   7       CRADIUS           the radius about the centroid       (`_clean`)
+---   7       CRADIUS           the radius about the centroid       (`_clean`; -1 until the
+---                                                                  first getRadius)
 ---   8       CAREA             the area of the leaves              (`_massOK`)
 ---   9-10    CAX, CAY          the sums of area * centroid         (`_massOK`)
 ---   11-13   CLEN, CLX, CLY    edges: the sum of lengths, and of length * midpoint

@@ -298,16 +298,22 @@ local function refresh(self)
     if y1 > maxy then maxy = y1 end
   end
   if self._nleaves == 0 then minx, miny, maxx, maxy = 0, 0, 0, 0 end
+  self[CRADIUS] = -1 -- (computed by the first getRadius: a space needs the bounds alone)
+  self[MINX], self[MINY], self[MAXX], self[MAXY] = minx, miny, maxx, maxy
+  self._clean = true
+end
+Collider._refresh = refresh
+
+-- The radius about the centroid, of a clean collider (see getRadius).
+local function radius(self)
   local cx, cy, leaves, r = self[X], self[Y], self._leaves, 0
   for i = 1, self._nleaves do
     local d = leaves[i]:_farthest(cx, cy)
     if d > r then r = d end
   end
   self[CRADIUS] = r
-  self[MINX], self[MINY], self[MAXX], self[MAXY] = minx, miny, maxx, maxy
-  self._clean = true
+  return r
 end
-Collider._refresh = refresh
 
 --- Recompute area and centroid now (they are also kept up to date automatically).
 ---@return self
@@ -356,7 +362,9 @@ end
 function Collider:getRadius()
   if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getRadius') end
   if not self._clean then refresh(self) end
-  return self[CRADIUS]
+  local r = self[CRADIUS]
+  if r < 0 then r = radius(self) end -- (a translation keeps it: see shift)
+  return r
 end
 
 --- Bounds of all leaves as minimum x, minimum y, width, height; (0, 0, 0, 0) when empty.
