@@ -45,7 +45,7 @@ local checkPose = Shape._checkPose
 local layout = require(ROOT .. '.base.layout')
 local args = require(ROOT .. '.collide.args')
 
-local cos, sin, huge = math.cos, math.sin, math.huge
+local cos, sin, huge, abs = math.cos, math.sin, math.huge, math.abs
 local number, positive, optPoint, fail, describe = check.number, check.positive, check.optPoint, check.fail,
   check.describe
 local badSelf, badCollider, type = check.badSelf, check.badCollider, type
@@ -571,8 +571,10 @@ local function translateBy(self, dx, dy, fname)
   local s = self._single
   if s then -- (one leaf, the usual body: eachLeaf without its loops and calls)
     local x, y = s[X] + dx, s[Y] + dy
-    checkPose(s, x, y, s._scale, fname)
-    s:_place(x, y, s._scale)
+    local extent = abs(x) + abs(y) + s._radius * s._scale
+    if extent - extent ~= 0 then checkPose(s, x, y, s._scale, fname) end -- (checkPose's test: it raises)
+    s[X], s[Y] = x, y -- (Shape:_place at the same scale)
+    s:_touch()
   else
     eachLeaf(self, fname, moved, dx, dy)
   end
@@ -597,10 +599,11 @@ end
 ---@return self
 function Collider:translateTo(x, y)
   if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:translateTo') end
-  number(x, 'strike.Collider:translateTo', 'x')
-  number(y, 'strike.Collider:translateTo', 'y')
-  local cx, cy = self:getCentroid()
-  translateBy(self, x - cx, y - cy, 'strike.Collider:translateTo')
+  -- (number's checks written out, as in translate: a game calls this for every body every frame)
+  if type(x) ~= 'number' or x - x ~= 0 then number(x, 'strike.Collider:translateTo', 'x') end
+  if type(y) ~= 'number' or y - y ~= 0 then number(y, 'strike.Collider:translateTo', 'y') end
+  if not self._massOK then refreshMass(self) end
+  translateBy(self, x - self[X], y - self[Y], 'strike.Collider:translateTo')
   return self
 end
 
