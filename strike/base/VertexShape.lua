@@ -92,7 +92,7 @@ end
 --- geometry about the centroid (cx, cy), with the given unscaled area; `_short` gets the
 --- shortest edge (for Shape:_checkNew, which the constructor calls next).
 function VertexShape:_setVertices(xs, ys, n, cx, cy, area)
-  local l = {}
+  local l = tnew and tnew(4 * n, 0) or {} -- (LuaJIT: no room to spare past 4n)
   local r2 = 0
   for i = 1, n do
     local x, y = xs[i] - cx, ys[i] - cy
