@@ -50,10 +50,10 @@ end
 --- `Class(...)`: make an instance and run `Class:new(...)` on it.
 ---@return table instance
 function Object:__call(...)
-  -- (a class may provide `_alloc()`, the empty table an instance starts as: room for the
-  -- fields it will have, see colliders/Collider.lua)
+  -- (a class may provide `_alloc(...)`, given the constructor's arguments: the empty table an
+  -- instance starts as, with room for the fields it will have; see colliders/Collider.lua)
   local alloc = self._alloc
-  local obj = setmetatable(alloc and alloc() or {}, self)
+  local obj = setmetatable(alloc and alloc(...) or {}, self)
   obj:new(...)
   return obj
 end

@@ -57,11 +57,18 @@ VertexShape.kind = 'polygon'
 VertexShape.name = 'VertexShape'
 VertexShape._shortName = 'shortest edge'
 
---- The empty instance `Class(...)` fills (class.lua): room for the slots of up to 5 vertices
---- (a polygon with more grows once) and for a polygon's fields.
+--- The empty instance `Class(...)` fills (class.lua): room for the slots of `n` vertices (by
+--- default 5; a polygon with more grows once) and for a polygon's fields. Subclasses that
+--- know their vertex count from their arguments pass it (ConvexPolygon, RegularPolygon):
+--- a table that grows is laid out anew, and LuaJIT's compiled field reads then meet two
+--- layouts of the same class where they would meet one.
+---@param n integer|nil
 ---@return table
-function VertexShape._alloc()
-  if tnew then return tnew(32, 32) end
+function VertexShape._alloc(n)
+  if tnew then
+    if type(n) == 'number' and n >= 3 and n <= 64 and n % 1 == 0 then return tnew(layout.size(n), 32) end
+    return tnew(32, 32)
+  end
   return { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 }
 end
 

@@ -18,6 +18,15 @@ local MIN_LENGTH, MAX_LENGTH = limits.MIN_LENGTH, limits.MAX_LENGTH
 local ConvexPolygon = VertexShape:extend()
 ConvexPolygon.name = 'ConvexPolygon'
 
+--- The empty instance `ConvexPolygon(...)` fills: room for as many vertices as points given.
+---@param ... any
+---@return table
+function ConvexPolygon._alloc(...)
+  local first = ...
+  if type(first) == 'table' then return VertexShape._alloc(math.floor(#first / 2)) end
+  return VertexShape._alloc(math.floor(select('#', ...) / 2))
+end
+
 --- Build from the points x1, y1, x2, y2, ... (or one table {x1, y1, ...}). The points may
 --- come in any order and winding; duplicate and collinear points are dropped. The stored
 --- winding is positive (positive shoelace area: counter-clockwise with y up, clockwise on

@@ -10,6 +10,13 @@ local sin, cos, pi = math.sin, math.cos, math.pi
 local RegularPolygon = ConvexPolygon:extend()
 RegularPolygon.name = 'RegularPolygon'
 
+--- The empty instance `RegularPolygon(x, y, n, ...)` fills: room for n vertices.
+---@param _ any
+---@param _ any
+---@param n any
+---@return table
+function RegularPolygon._alloc(_, _, n) return ConvexPolygon.super._alloc(n) end
+
 --- An n-sided regular polygon (3 <= n <= 4096) centred on (x, y) with circumradius
 --- `radius`, turned by `angle`. Unrotated, vertex n sits at (x, y + radius), as in the
 --- original Strike (so n = 4 gives a diamond).
