@@ -420,7 +420,8 @@ local function elemsIter(self, prev)
 end
 
 --- Iterate over every leaf shape, nested or not, depth first in insertion order:
---- `for shape in collider:elems() do`. Allocates nothing.
+--- `for shape in collider:elems() do`. Allocates nothing once used (the first call makes the
+--- table of positions it keeps). A loop that removes the leaf it is at ends there.
 ---@return function, strike.Collider, nil
 function Collider:elems()
   if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:elems') end
