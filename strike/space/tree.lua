@@ -779,6 +779,72 @@ function Tree:query(minx, miny, maxx, maxy, out)
   return k
 end
 
+-- Where the ray (x, y) + t (dx, dy), 1 / dx = ix, 1 / dy = iy, enters the box grown by e,
+-- if it does so within [0, maxT]; else -1. The slab test (Kay and Kajiya, 1986), without
+-- branches but for a direction parallel to an axis (zx, zy: its x or y component is 0, or
+-- so small that its inverse is infinite), which LuaJIT compiles into one guard per ray:
+-- with the branches, its side traces failed ("register coalescing too complex").
+-- (two spellings, as refit's: min and max for LuaJIT, comparisons for the interpreters,
+-- where math.min and math.max are calls)
+local entry
+if JIT then
+  entry = function(bx0, by0, bx1, by1, e, x, y, zx, zy, ix, iy, maxT)
+    bx0, by0, bx1, by1 = bx0 - e, by0 - e, bx1 + e, by1 + e
+    local lo, hi = 0, maxT
+    if zx then
+      if x < bx0 or x > bx1 then return -1 end
+    else
+      local t1, t2 = (bx0 - x) * ix, (bx1 - x) * ix
+      lo, hi = max(lo, min(t1, t2)), min(hi, max(t1, t2))
+    end
+    if zy then
+      if y < by0 or y > by1 then return -1 end
+    else
+      local t1, t2 = (by0 - y) * iy, (by1 - y) * iy
+      lo, hi = max(lo, min(t1, t2)), min(hi, max(t1, t2))
+    end
+    if lo <= hi then return lo end
+    return -1
+  end
+else
+  entry = function(bx0, by0, bx1, by1, e, x, y, zx, zy, ix, iy, maxT)
+    bx0, by0, bx1, by1 = bx0 - e, by0 - e, bx1 + e, by1 + e
+    local lo, hi = 0, maxT
+    if zx then
+      if x < bx0 or x > bx1 then return -1 end
+    else
+      local t1, t2 = (bx0 - x) * ix, (bx1 - x) * ix
+      if t1 > t2 then t1, t2 = t2, t1 end
+      if t1 > lo then lo = t1 end
+      if t2 < hi then hi = t2 end
+    end
+    if zy then
+      if y < by0 or y > by1 then return -1 end
+    else
+      local t1, t2 = (by0 - y) * iy, (by1 - y) * iy
+      if t1 > t2 then t1, t2 = t2, t1 end
+      if t1 > lo then lo = t1 end
+      if t2 < hi then hi = t2 end
+    end
+    if lo <= hi then return lo end
+    return -1
+  end
+end
+
+-- The constants of a walk along the ray from (x, y) along (dx, dy): the inverse direction,
+-- whether each component is as good as 0 (its inverse is infinite), and the pad every box
+-- is grown by: a rounding's worth, relative to the coordinates and the origin's (a point's
+-- or an edge's box has no width, and the slab arithmetic's rounding alone could miss it, or
+-- put a box's entry past a hit exactly on its side). One pad for the whole walk, from the
+-- root's box, which holds every box below it: at least each box's own.
+local function rayWalk(self, x, y, dx, dy)
+  local root = self.root
+  local ix, iy = 1 / dx, 1 / dy
+  local e = 1e-12 * (2 * max(abs(self.nx0[root]), abs(self.nx1[root])) + 2 * max(abs(self.ny0[root]),
+    abs(self.ny1[root])) + abs(x) + abs(y))
+  return ix, iy, ix == huge or ix == -huge, iy == huge or iy == -huge, e
+end
+
 --- The proxies whose exact boxes the ray from (x, y) along (dx, dy) reaches within
 --- [0, maxT]: their ids into `ids` and where the ray enters each box into `ts` (0 when it
 --- starts inside), in no particular order; returns their number. The slab test (Kay and
@@ -798,47 +864,24 @@ function Tree:rayCandidates(x, y, dx, dy, maxT, ids, ts)
   local c1, c2, proxyOf = self.child1, self.child2, self.proxyOf
   local x0, y0, x1, y1 = self.nx0, self.ny0, self.nx1, self.ny1
   local px0, py0, px1, py1 = self.px0, self.py0, self.px1, self.py1
-  local ix, iy = 1 / dx, 1 / dy
-  local root = self.root
-  -- (every box grown by a rounding's worth, relative to the coordinates and the origin's: a
-  -- point's or an edge's box has no width, and the slab arithmetic's rounding alone could
-  -- miss it, or put a box's entry past a hit exactly on its side. One pad for the whole
-  -- walk, from the root's box, which holds every box below it: at least each box's own.)
-  local e = 1e-12 * (2 * max(abs(x0[root]), abs(x1[root])) + 2 * max(abs(y0[root]), abs(y1[root])) + abs(x) + abs(y))
+  local ix, iy, zx, zy, e = rayWalk(self, x, y, dx, dy)
   local stack, top, k = self.stack, 1, 0
-  stack[1] = root
+  stack[1] = self.root
   while top > 0 do
     local n = stack[top]
     top = top - 1
     local a = c1[n]
-    local bx0, by0, bx1, by1
+    local t -- (a leaf's exact box, an inner node's union of fat boxes)
     if a == 0 then
       local id = proxyOf[n]
-      bx0, by0, bx1, by1 = px0[id] - e, py0[id] - e, px1[id] + e, py1[id] + e
+      t = entry(px0[id], py0[id], px1[id], py1[id], e, x, y, zx, zy, ix, iy, maxT)
     else
-      bx0, by0, bx1, by1 = x0[n] - e, y0[n] - e, x1[n] + e, y1[n] + e
+      t = entry(x0[n], y0[n], x1[n], y1[n], e, x, y, zx, zy, ix, iy, maxT)
     end
-    local lo, hi = 0, maxT
-    if dx == 0 then
-      if x < bx0 or x > bx1 then hi = -1 end
-    else
-      local t1, t2 = (bx0 - x) * ix, (bx1 - x) * ix
-      if t1 > t2 then t1, t2 = t2, t1 end
-      if t1 > lo then lo = t1 end
-      if t2 < hi then hi = t2 end
-    end
-    if dy == 0 then
-      if y < by0 or y > by1 then hi = -1 end
-    else
-      local t1, t2 = (by0 - y) * iy, (by1 - y) * iy
-      if t1 > t2 then t1, t2 = t2, t1 end
-      if t1 > lo then lo = t1 end
-      if t2 < hi then hi = t2 end
-    end
-    if lo <= hi then
+    if t >= 0 then
       if a == 0 then
         k = k + 1
-        ids[k], ts[k] = proxyOf[n], lo
+        ids[k], ts[k] = proxyOf[n], t
       else
         stack[top + 1], stack[top + 2] = a, c2[n]
         top = top + 2
@@ -846,30 +889,6 @@ function Tree:rayCandidates(x, y, dx, dy, maxT, ids, ts)
     end
   end
   return k
-end
-
--- Where the ray (x, y) + t (dx, dy), 1 / dx = ix, 1 / dy = iy, enters the box grown by e,
--- if it does so within [0, maxT]; else -1. The slab test of rayCandidates, without
--- branches but for a direction parallel to an axis (zx, zy: its x or y component is 0, or
--- so small that its inverse is infinite), which LuaJIT compiles into one guard per ray:
--- with the branches, its side traces failed ("register coalescing too complex").
-local function entry(bx0, by0, bx1, by1, e, x, y, zx, zy, ix, iy, maxT)
-  bx0, by0, bx1, by1 = bx0 - e, by0 - e, bx1 + e, by1 + e
-  local lo, hi = 0, maxT
-  if zx then
-    if x < bx0 or x > bx1 then return -1 end
-  else
-    local t1, t2 = (bx0 - x) * ix, (bx1 - x) * ix
-    lo, hi = max(lo, min(t1, t2)), min(hi, max(t1, t2))
-  end
-  if zy then
-    if y < by0 or y > by1 then return -1 end
-  else
-    local t1, t2 = (by0 - y) * iy, (by1 - y) * iy
-    lo, hi = max(lo, min(t1, t2)), min(hi, max(t1, t2))
-  end
-  if lo <= hi then return lo end
-  return -1
 end
 
 --- The proxies whose exact boxes the ray reaches, nearer boxes first, for a closest hit:
@@ -893,9 +912,7 @@ function Tree:rayVisit(x, y, dx, dy, maxT, visit, ctx)
   local c1, c2, proxyOf = self.child1, self.child2, self.proxyOf
   local x0, y0, x1, y1 = self.nx0, self.ny0, self.nx1, self.ny1
   local px0, py0, px1, py1 = self.px0, self.py0, self.px1, self.py1
-  local ix, iy = 1 / dx, 1 / dy
-  local zx, zy = ix == huge or ix == -huge, iy == huge or iy == -huge
-  local e = 1e-12 * (2 * max(abs(x0[root]), abs(x1[root])) + 2 * max(abs(y0[root]), abs(y1[root])) + abs(x) + abs(y))
+  local ix, iy, zx, zy, e = rayWalk(self, x, y, dx, dy)
   local t = entry(x0[root], y0[root], x1[root], y1[root], e, x, y, zx, zy, ix, iy, maxT)
   if t < 0 then return end
   local stack, ts, top = self.stack, self.tstack, 1
@@ -909,7 +926,7 @@ function Tree:rayVisit(x, y, dx, dy, maxT, visit, ctx)
         maxT = visit(ctx, proxyOf[n], tn, maxT)
       else
         local b = c2[n]
-        local ta, tb
+        local ta, tb -- (as rayCandidates: a leaf's exact box, an inner node's union)
         if c1[a] == 0 then
           local id = proxyOf[a]
           ta = entry(px0[id], py0[id], px1[id], py1[id], e, x, y, zx, zy, ix, iy, maxT)
