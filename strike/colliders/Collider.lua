@@ -39,7 +39,8 @@ local ROOT = (...):match('^(.-)%.colliders%.[^%.]+$')
 local Object = require(ROOT .. '.class')
 local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
-local unpack, tnew = require(ROOT .. '.compat').unpack, require(ROOT .. '.compat').tableNew
+local compat = require(ROOT .. '.compat')
+local unpack, tnew = compat.unpack, compat.tableNew
 local rotate = require(ROOT .. '.vec').rotate
 local checkPose = Shape._checkPose
 local layout = require(ROOT .. '.base.layout')
@@ -66,15 +67,21 @@ Collider.name = 'Collider'
 local function isShape(v) return type(v) == 'table' and getmetatable(v) ~= nil and Object.is(v, Shape) end
 local function isCollider(v) return type(v) == 'table' and getmetatable(v) ~= nil and Object.is(v, Collider) end
 
+-- The cache slots and flags, all stale (see the cache protocol above), laid out once, at
+-- construction, so that the object's fields never move.
+local function startCaches(self)
+  for k = 1, CSIZE do
+    if self[k] == nil then self[k] = 0 end
+  end
+  self._nleaves, self._massOK, self._clean, self._single = -1, false, false, false
+end
+
 --- A collider holding the given shapes and colliders (any number, nested to any depth).
 ---@param ... strike.Shape|strike.Collider
 function Collider:new(...)
   if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.Collider:new') end
   self.shapes = {}
-  -- (the cache fields get their slots now, so the object's fields are laid out once, at
-  -- construction; see the cache protocol above)
-  for k = 1, CSIZE do self[k] = 0 end
-  self._nleaves, self._massOK, self._clean, self._single = -1, false, false, false
+  startCaches(self)
   self:add(...)
 end
 
@@ -110,11 +117,8 @@ function Collider:add(...)
   if not shapes then shapes = {}; self.shapes = shapes end
   if self._single == nil then
     -- (a collider whose constructor adds without calling Collider.new, as the original
-    -- Strike's walkthrough does: its cache fields start here, see the cache protocol)
-    for k = 1, CSIZE do
-      if self[k] == nil then self[k] = 0 end
-    end
-    self._nleaves, self._massOK, self._clean, self._single = -1, false, false, false
+    -- Strike's walkthrough does: its caches start here)
+    startCaches(self)
   end
   for i = 1, select('#', ...) do
     local child = select(i, ...)
