@@ -18,6 +18,8 @@ local args = require(ROOT .. '.collide.args')
 local Shape = require(ROOT .. '.base.Shape')
 local Collider = require(ROOT .. '.colliders.Collider')
 local check = require(ROOT .. '.check')
+local layout = require(ROOT .. '.base.layout')
+local COUNT, DIRTY = layout.COUNT, layout.DIRTY
 
 local describe, what, fail = check.describe, check.what, check.fail
 local root = Shape._rootOf
@@ -122,9 +124,9 @@ local function checkFace(m, a, b)
   if type(m.nx) ~= 'number' or type(m.ny) ~= 'number' or type(m.depth) ~= 'number' then
     fail('strike.ite: the MTV\'s nx, ny and depth must be numbers (an MTV from S.AT, S.triking or S.MTV)')
   end
-  if type(e) ~= 'number' or e % 1 ~= 0 or (e > 0 and e > (a._n or 0)) or (e < 0 and -e > (b._n or 0)) then
+  if type(e) ~= 'number' or e % 1 ~= 0 or (e > 0 and e > (a[COUNT] or 0)) or (e < 0 and -e > (b[COUNT] or 0)) then
     fail(('strike.ite: the MTV\'s edgeIndex must be 0, i for face i of colliderShape (it has %d) or -j for'
-      .. ' face j of collidedShape (it has %d), got %s'):format(a._n or 0, b._n or 0, describe(e)))
+      .. ' face j of collidedShape (it has %d), got %s'):format(a[COUNT] or 0, b[COUNT] or 0, describe(e)))
   end
 end
 
@@ -181,8 +183,8 @@ function S.ite(mtv, out)
     checkFace(m, a, b)
   end
   if not (m.depth > 0) then return nil end -- luacheck: ignore 581 (NaN reads as no collision)
-  if a._dirty then a:_refresh() end
-  if b._dirty then b:_refresh() end
+  if a[DIRTY] then a:_refresh() end
+  if b[DIRTY] then b:_refresh() end
   out = out or {}
   local k = ops.contact(a, b, m.nx, m.ny, m.depth, m.edgeIndex, out)
   if k == 0 then return nil end

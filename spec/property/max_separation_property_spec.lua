@@ -2,6 +2,7 @@
 -- every face against every vertex finds.
 local S = require('strike')
 local sat = require('strike.collide.sat')
+local layout = require('strike.base.layout')
 local PRNG = require('spec.helpers.prng')
 
 local SEED = PRNG.seedFromEnv(777)
@@ -10,10 +11,10 @@ local SEED = PRNG.seedFromEnv(777)
 -- among ties; and the lowest face that separates (s >= 0) with its separation, if any.
 local function fullScan(A, B)
   local best, bi, firstS, firstI = -math.huge, 1, nil, nil
-  for i = 1, A._n do
+  for i = 1, A[layout.COUNT] do
     local nx, ny = A:getNormal(i)
     local s = math.huge
-    for j = 1, B._n do
+    for j = 1, B[layout.COUNT] do
       local x, y = B:getVertex(j)
       local p = nx * x + ny * y
       if p < s then s = p end
@@ -116,7 +117,7 @@ describe('centrally symmetric polygons', function()
     }
     for k, c in ipairs(cases) do
       local shape, half = c[1], c[2]
-      assert.equals(half, shape._half, 'case ' .. k)
+      assert.equals(half, shape[layout.HALF], 'case ' .. k)
       for i = 1, half do
         local ax, ay = shape:getNormal(i)
         local bx, by = shape:getNormal(i + half)

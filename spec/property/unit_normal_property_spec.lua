@@ -4,6 +4,7 @@
 -- transform refuses too. Reproduce a failure with STRIKE_SEED=<seed> (any VM); the message
 -- names the seed, the case and the shapes at full precision.
 local S = require 'strike'
+local layout = require 'strike.base.layout'
 local PRNG = require('spec.helpers.prng')
 local brute = require('spec.property.brute')
 local rb = require('spec.property.ray_brute')
@@ -283,7 +284,7 @@ describe('unit normals', function()
       -- the nearest limit the shape's lengths come to, relative (skip rounding's reach)
       local margin = huge
       for _, leaf in ipairs(base.shapes and base.shapes or { base }) do
-        local short, radius = leaf._short * k, leaf._radius * k
+        local short, radius = leaf[layout.SHORT] * k, leaf[layout.RADIUS] * k
         margin = min(margin, abs(short / 1e-100 - 1), abs(radius / 1e100 - 1))
       end
       if margin > 1e-9 then

@@ -30,6 +30,7 @@ local ROOT = (...):match('^(.-)%.base%.[^%.]+$')
 local Edge = require(ROOT .. '.shapes.Edge')
 local check = require(ROOT .. '.check')
 local layout = require(ROOT .. '.base.layout')
+local COS, DIRTY, SCALE, SIN = layout.COS, layout.DIRTY, layout.SCALE, layout.SIN
 local rotate = require(ROOT .. '.vec').rotate
 
 local X, Y = layout.X, layout.Y
@@ -43,6 +44,11 @@ ChainSegment.name = 'ChainSegment'
 ChainSegment.kind = 'chain'
 
 local FNAME = 'strike.ChainSegment'
+
+--- The empty instance (class.lua): an edge's slots, and room for a segment's named fields (its
+--- ghost vertices and corners: 16).
+---@return table
+function ChainSegment._alloc() return Edge._alloc2With(16) end
 
 -- An optional ghost vertex: both coordinates, or neither.
 local function optGhost(x, y, what)
@@ -111,7 +117,7 @@ end
 --- world ghost vertices and the corner normals.
 function ChainSegment:_refresh()
   Edge._refresh(self)
-  local c, s, k = self._cos, self._sin, self._scale
+  local c, s, k = self[COS], self[SIN], self[SCALE]
   local sc, ss = c * k, s * k
   local x0, y0 = self[X], self[Y]
   if self._hasPrev then
@@ -131,7 +137,7 @@ end
 ---@return number|nil x0, number|nil y0, number|nil x3, number|nil y3
 function ChainSegment:getGhostVertices()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.ChainSegment:getGhostVertices') end
-  if self._dirty then self:_refresh() end
+  if self[DIRTY] then self:_refresh() end
   local x0, y0, x3, y3
   if self._hasPrev then x0, y0 = self._wprevx, self._wprevy end
   if self._hasNext then x3, y3 = self._wnextx, self._wnexty end

@@ -12,6 +12,8 @@ local ROOT = (...):match('^(.-)%.base%.[^%.]+$')
 local Object = require(ROOT .. '.class')
 local check = require(ROOT .. '.check')
 local layout = require(ROOT .. '.base.layout')
+local ANGLE, AREA, COS, DIRTY = layout.ANGLE, layout.AREA, layout.COS, layout.DIRTY
+local RADIUS, SCALE, SHORT, SIN = layout.RADIUS, layout.SCALE, layout.SHORT, layout.SIN
 local vec = require(ROOT .. '.vec')
 local limits = require(ROOT .. '.limits')
 local kinds = require(ROOT .. '.collide.dispatch').kind
@@ -78,12 +80,12 @@ function Shape:_setPose(x, y)
   -- (an own `_seams`, false unless a compound marks faces: the collider queries read it per
   -- leaf, and a missing field would cost a walk up the class chain; see VertexShape.lua)
   if rawget(self, '_seams') == nil then self._seams = false end
-  for k = 1, layout.HEADER do
+  for k = 1, layout.SHAPE_HEADER do
     if self[k] == nil then self[k] = 0 end -- (refreshed before any use: the shape starts dirty)
   end
   self[X], self[Y] = x + 0.0, y + 0.0 -- (floats: see setPose)
-  self._angle, self._cos, self._sin, self._scale = 0, 1, 0, 1
-  self._dirty = true
+  self[ANGLE], self[COS], self[SIN], self[SCALE] = 0, 1, 0, 1
+  self[DIRTY] = true
   poses = poses + 1
   self._pose = poses
 end
@@ -94,32 +96,28 @@ end
 ---@param y number
 function Shape:_placeCentroid(x, y) self[X], self[Y] = x + 0.0, y + 0.0 end
 
---- The empty instance `Class(...)` fills (class.lua): room for the header's slots and for
---- the fields of a shape, so that no table grows while it is built. Kinds with vertex
---- records ask for more (VertexShape).
+--- The empty instance `Class(...)` fills (class.lua): room for the slots every shape has
+--- (layout.lua) and for its few named fields, so that no table grows while it is built.
+--- Kinds with vertex records ask for more (VertexShape).
 ---@return table
 function Shape._alloc()
-  if tnew then return tnew(layout.HEADER, 16) end
-  return { 0, 0, 0, 0, 0, 0, 0 }
+  if tnew then return tnew(layout.SHAPE_HEADER, 8) end
+  return { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 }
 end
 
---- The shortest length of the shape's local geometry (unscaled): a polygon's or an edge's
---- shortest edge, a circle's radius; 0 when it has none (a point). With `_radius` (the
---- largest distance from the centroid), what strike's size limits apply to (limits.lua).
-Shape._short = 0
---- What `_short` measures, for error messages.
+--- What the slot SHORT measures (layout.lua: a shape's shortest length), for error messages.
 Shape._shortName = 'shortest length'
 
 -- Why the shape at this scale is outside strike's limits on lengths (limits.lua), or nil.
 -- `is` is the verb of the message ('is', 'would be').
 local function sizeError(self, scale, is)
-  local size = self._radius * scale
+  local size = self[RADIUS] * scale
   if not (size <= MAX_LENGTH) then -- luacheck: ignore 581 (NaN is too large)
     return ('too large: its radius (from the centroid to the farthest point) %s %s, above %s, the largest'
       .. ' length strike accepts'):format(is, check.describe(size), check.describe(MAX_LENGTH))
   end
-  local short = self._short * scale
-  if short < MIN_LENGTH and self._short > 0 then
+  local short = self[SHORT] * scale
+  if short < MIN_LENGTH and self[SHORT] > 0 then
     return ('too small: its %s %s %s, below %s, the smallest length strike accepts (its square must stay a'
       .. ' normal double)'):format(self._shortName, is, check.describe(short), check.describe(MIN_LENGTH))
   end
@@ -134,7 +132,7 @@ end
 function Shape:_checkNew(fname)
   local err = sizeError(self, 1, 'is')
   if err then fail(fname .. ': ' .. err) end
-  if not finite(abs(self[X]) + abs(self[Y]) + self._radius) then
+  if not finite(abs(self[X]) + abs(self[Y]) + self[RADIUS]) then
     fail(fname .. ': coordinates too large (|x| + |y| + radius must stay finite)')
   end
 end
@@ -150,13 +148,13 @@ end
 ---@param scale number
 ---@param fname string
 function Shape._checkPose(s, x, y, scale, fname)
-  if scale ~= s._scale then
+  if scale ~= s[SCALE] then
     if not (scale > 0) then fail(fname .. ': the scale would underflow to 0') end -- luacheck: ignore 581
     if scale == huge then fail(fname .. ': the scale would overflow') end
     local err = sizeError(s, scale, 'would be')
     if err then fail(fname .. ': the result would be ' .. err) end
   end
-  if not finite(abs(x) + abs(y) + s._radius * scale) then
+  if not finite(abs(x) + abs(y) + s[RADIUS] * scale) then
     fail(fname .. ': the result would overflow (coordinates too large)')
   end
 end
@@ -168,7 +166,7 @@ local checkPose = Shape._checkPose
 -- 2^63 (a circle 5e9 away got the normal (1.95, 0)).
 local function setPose(self, x, y, scale, fname)
   checkPose(self, x, y, scale, fname)
-  self[X], self[Y], self._scale = x + 0.0, y + 0.0, scale
+  self[X], self[Y], self[SCALE] = x + 0.0, y + 0.0, scale
 end
 
 --- Set the pose to a position and scale already checked (a collider moving its leaves),
@@ -178,10 +176,10 @@ end
 ---@param scale number
 ---@param turn number|nil
 function Shape:_place(x, y, scale, turn)
-  self[X], self[Y], self._scale = x, y, scale
+  self[X], self[Y], self[SCALE] = x, y, scale
   if turn then
-    local angle = self._angle + turn
-    self._angle, self._cos, self._sin = angle, cos(angle), sin(angle)
+    local angle = self[ANGLE] + turn
+    self[ANGLE], self[COS], self[SIN] = angle, cos(angle), sin(angle)
   end
   self:_touch()
 end
@@ -195,7 +193,7 @@ end
 --- since its last move, since refreshing it cleans every collider in it; when it stops
 --- earlier, the root was already stale, so already queued.
 function Shape:_touch()
-  self._dirty = true
+  self[DIRTY] = true
   poses = poses + 1
   self._pose = poses
   local p = self.parent
@@ -226,8 +224,8 @@ function Shape:translate(dx, dy)
   if type(dx) ~= 'number' or dx - dx ~= 0 then number(dx, 'strike.Shape:translate', 'dx') end
   if type(dy) ~= 'number' or dy - dy ~= 0 then number(dy, 'strike.Shape:translate', 'dy') end
   local x, y = self[X] + dx, self[Y] + dy
-  if abs(x) + abs(y) + self._radius * self._scale == huge then
-    setPose(self, x, y, self._scale, 'strike.Shape:translate') -- (raises the error)
+  if abs(x) + abs(y) + self[RADIUS] * self[SCALE] == huge then
+    setPose(self, x, y, self[SCALE], 'strike.Shape:translate') -- (raises the error)
   end
   self[X], self[Y] = x + 0.0, y + 0.0
   self:_touch()
@@ -242,8 +240,8 @@ function Shape:translateTo(x, y)
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:translateTo') end
   if type(x) ~= 'number' or x - x ~= 0 then number(x, 'strike.Shape:translateTo', 'x') end
   if type(y) ~= 'number' or y - y ~= 0 then number(y, 'strike.Shape:translateTo', 'y') end
-  if abs(x) + abs(y) + self._radius * self._scale == huge then
-    setPose(self, x, y, self._scale, 'strike.Shape:translateTo') -- (raises the error)
+  if abs(x) + abs(y) + self[RADIUS] * self[SCALE] == huge then
+    setPose(self, x, y, self[SCALE], 'strike.Shape:translateTo') -- (raises the error)
   end
   self[X], self[Y] = x + 0.0, y + 0.0
   self:_touch()
@@ -254,10 +252,10 @@ end
 local function rotateBy(self, a, rx, ry, fname)
   if rx then
     local dx, dy = rotate(self[X] - rx, self[Y] - ry, cos(a), sin(a))
-    setPose(self, rx + dx, ry + dy, self._scale, fname)
+    setPose(self, rx + dx, ry + dy, self[SCALE], fname)
   end
-  local angle = self._angle + a
-  self._angle, self._cos, self._sin = angle, cos(angle), sin(angle)
+  local angle = self[ANGLE] + a
+  self[ANGLE], self[COS], self[SIN] = angle, cos(angle), sin(angle)
   self:_touch()
   return self
 end
@@ -285,7 +283,7 @@ function Shape:rotateTo(angle, refx, refy)
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:rotateTo') end
   number(angle, 'strike.Shape:rotateTo', 'angle')
   refx, refy = optPoint(refx, refy, 'strike.Shape:rotateTo')
-  return rotateBy(self, angle - self._angle, refx, refy, 'strike.Shape:rotateTo')
+  return rotateBy(self, angle - self[ANGLE], refx, refy, 'strike.Shape:rotateTo')
 end
 
 --- Scale by factor `sf` (> 0) about (refx, refy), by default the centroid. Calls compose:
@@ -300,7 +298,7 @@ function Shape:scale(sf, refx, refy)
   refx, refy = optPoint(refx, refy, 'strike.Shape:scale')
   local x, y = self[X], self[Y]
   if refx then x, y = refx + (x - refx) * sf, refy + (y - refy) * sf end
-  setPose(self, x, y, self._scale * sf, 'strike.Shape:scale')
+  setPose(self, x, y, self[SCALE] * sf, 'strike.Shape:scale')
   self:_touch()
   return self
 end
@@ -309,14 +307,14 @@ end
 ---@return number
 function Shape:getAngle()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getAngle') end
-  return self._angle
+  return self[ANGLE]
 end
 
 --- The accumulated scale factor (1 after construction).
 ---@return number
 function Shape:getScale()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getScale') end
-  return self._scale
+  return self[SCALE]
 end
 
 --- The centroid (area centroid for polygons, centre for circles, midpoint for edges).
@@ -330,7 +328,7 @@ end
 ---@return number
 function Shape:getArea()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getArea') end
-  return self._area * self._scale * self._scale
+  return self[AREA] * self[SCALE] * self[SCALE]
 end
 
 --- Area and centroid together.
@@ -344,14 +342,14 @@ end
 ---@return number
 function Shape:getRadius()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getRadius') end
-  return self._radius * self._scale
+  return self[RADIUS] * self[SCALE]
 end
 
 --- Axis-aligned bounds as minimum x, minimum y, width, height.
 ---@return number x, number y, number w, number h
 function Shape:getBbox()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getBbox') end
-  if self._dirty then self:_refresh() end
+  if self[DIRTY] then self:_refresh() end
   return self[MINX], self[MINY], self[MAXX] - self[MINX], self[MAXY] - self[MINY]
 end
 
@@ -359,7 +357,7 @@ end
 ---@return number minx, number miny, number maxx, number maxy
 function Shape:getBounds()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getBounds') end
-  if self._dirty then self:_refresh() end
+  if self[DIRTY] then self:_refresh() end
   return self[MINX], self[MINY], self[MAXX], self[MAXY]
 end
 
@@ -396,7 +394,7 @@ function Shape:copy(x, y, angle)
     if rawget(c, k) == nil and k ~= 'parent' and k ~= '_space' and k ~= '_sid' then c[k] = v end
   end
   -- (local geometry is never changed after construction, so copies share it)
-  c._dirty = true
+  c[DIRTY] = true
   poses = poses + 1
   c._pose = poses
   if x ~= nil or y ~= nil then

@@ -1,18 +1,18 @@
 --- The base of every shape made of vertices: ConvexPolygon (and its subclasses) and Edge.
---- Geometry lives in flat number arrays with a count, _n:
+--- Geometry lives in flat number arrays with a count, n (the slot COUNT):
 ---   _l          local geometry, 4n numbers: vertex i's record starts at k = 4i - 3 and holds
 ---               the vertex relative to the centroid, unrotated and unscaled (l[k], l[k+1];
 ---               positive winding), and the unit outward normal of edge i, from vertex i to
 ---               vertex i + 1 (l[k+2], l[k+3])
 ---   self[...]   world-space data, refreshed when dirty, in the shape's own array part: the
 ---               header every shape has, then one record per vertex (vertex, edge normal, edge
----               offset), laid out as strike/base/layout.lua says. The narrow phase reads the
----               shape's table and nothing else, so that a test touches few cache lines and
----               follows no pointers.
----   _half       n / 2 when the polygon is centrally symmetric (normal i + n/2 is exactly
+---               offset), laid out as strike/base/layout.lua says, with the shape's scalars
+---               (pose, sizes, count). The narrow phase reads the shape's table and nothing
+---               else, so that a test touches few cache lines and follows no pointers.
+---   HALF        (slot) n / 2 when the polygon is centrally symmetric (normal i + n/2 is exactly
 ---               -normal i: rectangles, even regular polygons, edges), else 0; the narrow
 ---               phase then gets two faces' separations from one projection of the other shape.
----   _round      the rounding radius, unscaled: 0 for a sharp polygon; r > 0 for a rounded
+---   ROUND       (slot) the rounding radius, unscaled: 0 for a sharp polygon; r > 0 for a rounded
 ---               shape (a capsule, a rounded rectangle or polygon), which is every point within
 ---               r of its polygon, the core (the vertices above are the core's). Its world
 ---               value is the header's slot R; a rounded shape has the kind 'rounded'
@@ -38,6 +38,10 @@ local ROOT = (...):match('^(.-)%.base%.[^%.]+$')
 local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
 local layout = require(ROOT .. '.base.layout')
+local AREA, COS, COUNT, DIRTY, HALF = layout.AREA, layout.COS, layout.COUNT, layout.DIRTY, layout.HALF
+local NCOS, NSIN, RADIUS = layout.NCOS, layout.NSIN, layout.RADIUS
+local ROUND, RSCALE, RX, RY, SCALE = layout.ROUND, layout.RSCALE, layout.RX, layout.RY, layout.SCALE
+local SHORT, SIN = layout.SHORT, layout.SIN
 local limits = require(ROOT .. '.limits')
 local tnew = require(ROOT .. '.compat').tableNew
 
@@ -58,26 +62,40 @@ VertexShape.name = 'VertexShape'
 VertexShape._shortName = 'shortest edge'
 
 --- The empty instance `Class(...)` fills (class.lua): room for the slots of `n` vertices (by
---- default 5; a polygon with more grows once) and for a polygon's fields. Subclasses that
---- know their vertex count from their arguments pass it (ConvexPolygon, RegularPolygon):
---- a table that grows is laid out anew, and LuaJIT's compiled field reads then meet two
---- layouts of the same class where they would meet one.
+--- default 5; a polygon with more grows once) and for a polygon's named fields (8: its own
+--- are _pose, _l, _seams and kind, then `parent`, or a space's two, and a subclass's few).
+--- Subclasses that know their vertex count from their arguments pass it (ConvexPolygon,
+--- RegularPolygon): a table that grows is laid out anew, and LuaJIT's compiled field reads
+--- then meet two layouts of the same class where they would meet one.
 ---@param n integer|nil
 ---@return table
 function VertexShape._alloc(n)
   if tnew then
-    if type(n) == 'number' and n >= 3 and n <= 64 and n % 1 == 0 then return tnew(layout.size(n), 32) end
-    return tnew(32, 32)
+    if type(n) == 'number' and n >= 3 and n <= 64 and n % 1 == 0 then return tnew(layout.size(n), 8) end
+    return tnew(layout.size(5), 8)
   end
-  return { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 }
+  return {
+    0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
+    0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0
+  } -- (layout.size(5) slots)
 end
 
---- The empty instance of a shape with two vertex records (edges, capsules, chain segments).
+--- The empty instance of a shape with two vertex records (edges, capsules, chain segments),
+--- with room for 8 named fields, or `nhash` when a subclass asks for more. (As an `_alloc`,
+--- it gets the constructor's arguments, which it ignores.)
+---@param nhash integer|nil
 ---@return table
-function VertexShape._alloc2()
-  if tnew then return tnew(17, 32) end
-  return { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 }
+local function alloc2(nhash)
+  if tnew then return tnew(layout.size(2), nhash) end
+  return {
+    0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0
+  } -- (layout.size(2) slots)
 end
+VertexShape._alloc2With = alloc2
+
+--- The empty instance of a shape with two vertex records, as an `_alloc` (class.lua).
+---@return table
+function VertexShape._alloc2() return alloc2(8) end
 
 -- Normals this close to antiparallel are made exactly antiparallel (a change far below
 -- any coordinate's rounding noise), so that opposite faces can share one projection.
@@ -96,7 +114,7 @@ local function symmetricHalf(l, n)
 end
 
 --- Store world-space vertices xs, ys (count n, positive winding, validated) as local
---- geometry about the centroid (cx, cy), with the given unscaled area; `_short` gets the
+--- geometry about the centroid (cx, cy), with the given unscaled area; the slot SHORT gets the
 --- shortest edge (for Shape:_checkNew, which the constructor calls next).
 function VertexShape:_setVertices(xs, ys, n, cx, cy, area)
   local l = tnew and tnew(4 * n, 0) or {} -- (LuaJIT: no room to spare past 4n)
@@ -124,38 +142,40 @@ function VertexShape:_setVertices(xs, ys, n, cx, cy, area)
     local e = length(xs[m] - xs[i], ys[m] - ys[i])
     if e < short then short = e end
   end
-  self._n, self._l = n, l
-  self._seams = false -- (see the header: an own field, read per leaf by the collider queries)
-  self._half = symmetricHalf(l, n)
   local size = layout.size(n)
   for k = 1, size do self[k] = 0 end
   for k = #self, size + 1, -1 do self[k] = nil end
-  self._area, self._radius, self._short = area, sqrt(r2), short
-  self._round = 0
+  self[COUNT], self._l = n, l
+  self._seams = false -- (see the header: an own field, read per leaf by the collider queries)
+  self[HALF] = symmetricHalf(l, n)
+  self[AREA], self[RADIUS], self[SHORT] = area, sqrt(r2), short
+  self[ROUND] = 0
+  -- (no refresh yet: see _refresh and _movedBounds)
+  self[NCOS], self[NSIN], self[RX], self[RY], self[RSCALE] = false, false, false, false, false
   self:_setPose(cx, cy)
 end
 
 --- Make the shape rounded by r (> 0, unscaled, validated): every point within r of its
 --- polygon. Call after _setVertices, with the vertices laid out about the rounded shape's
---- centroid and `_area` already the rounded area (geometry/polygon.lua: rounded).
+--- centroid and its AREA slot already the rounded area (geometry/polygon.lua: rounded).
 ---@param r number
 function VertexShape:_setRounding(r)
-  self._round = r + 0.0
-  self._radius = self._radius + r
+  self[ROUND] = r + 0.0
+  self[RADIUS] = self[RADIUS] + r
   self.kind = 'rounded'
-  self._dirty = true
+  self[DIRTY] = true
 end
 
 function VertexShape:_refresh()
-  local n = self._n
-  local c, s, k = self._cos, self._sin, self._scale
+  local n = self[COUNT]
+  local c, s, k = self[COS], self[SIN], self[SCALE]
   local x0, y0 = self[X], self[Y]
   local l = self._l
   local minx, miny, maxx, maxy = huge, huge, -huge, -huge
   local sc, ss = c * k, s * k
-  -- The world normals are those of the angle they were made for (`_nc`, `_ns`): a move or a
+  -- The world normals are those of the angle they were made for (the slots NCOS, NSIN): a move or a
   -- scale leaves unit normals as they are, so they are turned only when the angle changed.
-  local turned = c ~= self._nc or s ~= self._ns
+  local turned = c ~= self[NCOS] or s ~= self[NSIN]
   for i = 1, n do
     local q = 4 * i - 3
     -- (vec.rotate's formula, written out: this loop runs for every vertex of every shape
@@ -178,12 +198,12 @@ function VertexShape:_refresh()
     end
     self[r], self[r + VY], self[r + D] = px, py, nx * px + ny * py
   end
-  self._nc, self._ns = c, s
-  self._rx, self._ry, self._rk = x0, y0, k -- (the pose refreshed for: see _movedBounds)
-  local r = self._round * k
+  self[NCOS], self[NSIN] = c, s
+  self[RX], self[RY], self[RSCALE] = x0, y0, k -- (the pose refreshed for: see _movedBounds)
+  local r = self[ROUND] * k
   self[MINX], self[MINY], self[MAXX], self[MAXY] = minx - r, miny - r, maxx + r, maxy + r
   self[R] = r
-  self._dirty = false
+  self[DIRTY] = false
 end
 
 --- The bounds of a dirty shape that has only moved since its last refresh (same angle and
@@ -196,9 +216,11 @@ end
 ---@return number maxx
 ---@return number maxy
 function VertexShape:_movedBounds()
-  local rx = self._rx
-  if rx == nil or self._cos ~= self._nc or self._sin ~= self._ns or self._scale ~= self._rk then return nil end
-  local dx, dy = self[X] - rx, self[Y] - self._ry
+  local rx = self[RX]
+  if rx == false or self[COS] ~= self[NCOS] or self[SIN] ~= self[NSIN] or self[SCALE] ~= self[RSCALE] then
+    return nil
+  end
+  local dx, dy = self[X] - rx, self[Y] - self[RY]
   local x0, y0, x1, y1 = self[MINX] + dx, self[MINY] + dy, self[MAXX] + dx, self[MAXY] + dy
   -- (each bound is a coordinate plus an offset, rounded twice here and once by a refresh)
   local e = 1e-14 * (abs(x0) + abs(y0) + abs(x1) + abs(y1) + abs(dx) + abs(dy))
@@ -214,7 +236,7 @@ end
 ---@return integer
 function VertexShape:getVertexCount()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getVertexCount') end
-  return self._n
+  return self[COUNT]
 end
 
 --- World coordinates of vertex i, or nil when i is out of range (never an error).
@@ -222,8 +244,8 @@ end
 ---@return number|nil x, number|nil y
 function VertexShape:getVertex(i)
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getVertex') end
-  if not inRange(i, self._n) then return nil end
-  if self._dirty then self:_refresh() end
+  if not inRange(i, self[COUNT]) then return nil end
+  if self[DIRTY] then self:_refresh() end
   local k = STRIDE * i + BASE
   return self[k], self[k + VY]
 end
@@ -234,9 +256,9 @@ end
 ---@return number|nil x1, number|nil y1, number|nil x2, number|nil y2
 function VertexShape:getEdge(i)
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getEdge') end
-  local n = self._n
+  local n = self[COUNT]
   if not inRange(i, n) then return nil end
-  if self._dirty then self:_refresh() end
+  if self[DIRTY] then self:_refresh() end
   local k, l = STRIDE * i + BASE, STRIDE * (i < n and i + 1 or 1) + BASE
   return self[k], self[k + VY], self[l], self[l + VY]
 end
@@ -246,8 +268,8 @@ end
 ---@return number|nil nx, number|nil ny
 function VertexShape:getNormal(i)
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getNormal') end
-  if not inRange(i, self._n) then return nil end
-  if self._dirty then self:_refresh() end
+  if not inRange(i, self[COUNT]) then return nil end
+  if self[DIRTY] then self:_refresh() end
   local k = STRIDE * i + BASE
   return self[k + NX], self[k + NY]
 end
@@ -258,10 +280,10 @@ end
 ---@return number[] vertices, integer count the number of vertices
 function VertexShape:getVertices(out)
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getVertices') end
-  if self._dirty then self:_refresh() end
+  if self[DIRTY] then self:_refresh() end
   out = out or {}
   if type(out) ~= 'table' or out.type ~= nil then check.badOut('strike.Shape:getVertices', out) end
-  local n = self._n
+  local n = self[COUNT]
   for i = 1, n do
     local k = STRIDE * i + BASE
     out[2 * i - 1], out[2 * i] = self[k], self[k + VY]
@@ -278,9 +300,9 @@ function VertexShape:project(nx, ny)
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:project') end
   number(nx, 'strike.Shape:project', 'nx')
   number(ny, 'strike.Shape:project', 'ny')
-  if self._dirty then self:_refresh() end
+  if self[DIRTY] then self:_refresh() end
   local lo, hi = huge, -huge
-  for k = FIRST, STRIDE * self._n + BASE, STRIDE do
+  for k = FIRST, STRIDE * self[COUNT] + BASE, STRIDE do
     local d = self[k] * nx + self[k + VY] * ny
     if d < lo then lo = d end
     if d > hi then hi = d end
@@ -294,7 +316,7 @@ end
 ---@return number
 function VertexShape:getRounding()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getRounding') end
-  return self._round * self._scale
+  return self[ROUND] * self[SCALE]
 end
 
 -- The squared distance from (x, y) to the segment from (x1, y1) to (x2, y2).
@@ -320,11 +342,11 @@ end
 ---@return integer
 function VertexShape:getSupport(nx, ny)
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getSupport') end
-  if self._dirty then self:_refresh() end
+  if self[DIRTY] then self:_refresh() end
   number(nx, 'strike.Shape:getSupport', 'nx')
   number(ny, 'strike.Shape:getSupport', 'ny')
   local best, bi = -huge, 1
-  for i = 1, self._n do
+  for i = 1, self[COUNT] do
     local k = STRIDE * i + BASE
     local d = self[k] * nx + self[k + VY] * ny
     if d > best then best, bi = d, i end
@@ -340,8 +362,8 @@ end
 function VertexShape:containsPoint(x, y)
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:containsPoint') end
   x, y = Shape._point(x, y, 'strike.Shape:containsPoint')
-  if self._dirty then self:_refresh() end
-  local r, n = self[R], self._n
+  if self[DIRTY] then self:_refresh() end
+  local r, n = self[R], self[COUNT]
   if r > 0 then
     -- rounded: inside when nearer than r to the core (the largest face separation when the
     -- point is in front of some face, else 0: inside the core)
@@ -370,7 +392,7 @@ end
 -- Stateless edge iterator: i, x1, y1, x2, y2.
 local function edgeIter(self, i)
   i = i + 1
-  local n = self._n
+  local n = self[COUNT]
   if i > n then return nil end
   local k, l = STRIDE * i + BASE, STRIDE * (i < n and i + 1 or 1) + BASE
   return i, self[k], self[k + VY], self[l], self[l + VY]
@@ -381,14 +403,14 @@ end
 ---@return function, strike.VertexShape, integer
 function VertexShape:ipairs()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:ipairs') end
-  if self._dirty then self:_refresh() end
+  if self[DIRTY] then self:_refresh() end
   return edgeIter, self, 0
 end
 
 -- Stateless edge-vector iterator: i, dx, dy.
 local function vecIter(self, i)
   i = i + 1
-  local n = self._n
+  local n = self[COUNT]
   if i > n then return nil end
   local k, l = STRIDE * i + BASE, STRIDE * (i < n and i + 1 or 1) + BASE
   return i, self[l] - self[k], self[l + VY] - self[k + VY]
@@ -398,7 +420,7 @@ end
 ---@return function, strike.VertexShape, integer
 function VertexShape:vecs()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:vecs') end
-  if self._dirty then self:_refresh() end
+  if self[DIRTY] then self:_refresh() end
   return vecIter, self, 0
 end
 
@@ -407,9 +429,9 @@ end
 ---@param py number
 ---@return number
 function VertexShape:_farthest(px, py)
-  if self._dirty then self:_refresh() end
+  if self[DIRTY] then self:_refresh() end
   local best = 0
-  for k = FIRST, STRIDE * self._n + BASE, STRIDE do
+  for k = FIRST, STRIDE * self[COUNT] + BASE, STRIDE do
     local dx, dy = self[k] - px, self[k + VY] - py
     local d = dx * dx + dy * dy
     if d > best then best = d end
@@ -433,7 +455,7 @@ local LINE_EPS = 1e-9
 --- centroid's coordinates plus the radius. The shape must be fresh (not dirty).
 ---@return number
 function VertexShape:_seamTolerance()
-  return SEAM_EPS * (abs(self[X]) + abs(self[Y]) + self._radius * self._scale)
+  return SEAM_EPS * (abs(self[X]) + abs(self[Y]) + self[RADIUS] * self[SCALE])
 end
 
 --- (internal) Is the point (px, py), taken to lie on face i's line, on a seam part of face
@@ -447,7 +469,7 @@ end
 function VertexShape:_onSeam(i, px, py, slack)
   local part = self._seams and self._seams[i]
   if not part then return false end
-  local n = self._n
+  local n = self[COUNT]
   local k, l = STRIDE * i + BASE, STRIDE * (i < n and i + 1 or 1) + BASE
   local ax, ay = self[k], self[k + VY]
   local ex, ey = self[l] - ax, self[l + VY] - ay
@@ -478,9 +500,9 @@ end
 function VertexShape:_onSeams(px, py)
   local seams = self._seams
   if not seams then return false end
-  if self._dirty then self:_refresh() end
+  if self[DIRTY] then self:_refresh() end
   local tol = self:_seamTolerance()
-  for i = 1, self._n do
+  for i = 1, self[COUNT] do
     if seams[i] then
       local k = STRIDE * i + BASE
       local off = (px - self[k]) * self[k + NX] + (py - self[k + VY]) * self[k + NY]
@@ -525,9 +547,9 @@ local seamOf = VertexShape._seamOf
 ---@param count integer
 ---@return table|false
 function VertexShape:_seamsFrom(src, count)
-  if self._dirty then self:_refresh() end
-  local n = self._n
-  local tol = LINE_EPS * self._radius * self._scale + self:_seamTolerance()
+  if self[DIRTY] then self:_refresh() end
+  local n = self[COUNT]
+  local tol = LINE_EPS * self[RADIUS] * self[SCALE] + self:_seamTolerance()
   local seams, any = {}, false
   for i = 1, n do
     local k, l = STRIDE * i + BASE, STRIDE * (i < n and i + 1 or 1) + BASE

@@ -2,25 +2,45 @@
 --- place that spells a slot number; every other file reads these names.
 ---
 --- A shape is its own world-data array (the narrow phase reads one table per shape and
---- follows no pointer). Every shape has the same header:
+--- follows no pointer). Its scalar state is there too, in numbered slots rather than named
+--- fields: a LuaJIT table's hash part is a power of two of 24-byte nodes, and a shape with
+--- its two dozen scalars named took a 32-node hash (768 bytes) where its own fields now fit
+--- in 8. Every shape has the same header:
 ---
----   slot  name   meaning
----   1-4   MINX, MINY, MAXX, MAXY   axis-aligned bounds            refreshed when dirty
----   5-6   X, Y   the pose's position: the centroid (a circle's     always current: transforms
----                centre), in world coordinates                     write it directly
----   7     R      the world radius the shape is rounded by: a       refreshed when dirty
----                circle's radius; 0 for polygons and segments
+---   slot   name     meaning
+---   1-4    MINX, MINY, MAXX, MAXY   axis-aligned bounds                refreshed when dirty
+---   5-6    X, Y     the pose's position: the centroid (a circle's     always current: transforms
+---                   centre), in world coordinates                      write it directly
+---   7      R        the world radius the shape is rounded by: a        refreshed when dirty
+---                   circle's radius; 0 for polygons and segments
+---   8      ANGLE    the pose's angle (radians)                         always current
+---   9-10   COS, SIN its cosine and sine                                always current
+---   11     SCALE    the pose's uniform scale                           always current
+---   12     DIRTY    true when the world data above and below is stale  (Shape:_touch)
+---   13     AREA     the area, unscaled                                 set at construction
+---   14     RADIUS   the largest distance from the centroid, unscaled   set at construction
+---   15     SHORT    the shortest length, unscaled (limits.lua): a      set at construction
+---                   polygon's shortest edge, a circle's radius, 0
 ---
---- Shapes made of vertices (VertexShape: polygons, edges, chain segments) follow with one
---- record of STRIDE numbers per vertex; vertex i's record starts at slot base(i) =
---- STRIDE * i + BASE and holds, at these offsets from its start:
+--- A shape without vertices (a circle, a point) has those SHAPE_HEADER slots and no more: its
+--- slot COUNT is nil, which is how the code that meets any shape tells it has none. Shapes
+--- made of vertices (VertexShape: polygons, edges, chain segments) go on:
+---
+---   16     COUNT    the number of vertices, n                          set at construction
+---   17     HALF     n / 2 when the shape is centrally symmetric, else 0 (VertexShape.lua)
+---   18     ROUND    the rounding radius, unscaled (0: sharp)           set at construction
+---   19-20  NCOS, NSIN  the COS, SIN the world normals were turned by   refreshed when dirty
+---   21-23  RX, RY, RSCALE  the X, Y, SCALE of the last refresh         (false before the first)
+---
+--- and follow with one record of STRIDE numbers per vertex; vertex i's record starts at slot
+--- base(i) = STRIDE * i + BASE and holds, at these offsets from its start:
 ---   VX, VY   the vertex
 ---   NX, NY   the unit outward normal of edge i (vertex i to vertex i + 1, wrapping)
 ---   D        the offset of edge i's line along that normal: dot(normal i, vertex i)
 --- All refreshed when dirty. A shape with n vertices has size(n) slots.
 ---
---- Everything else a shape keeps (local geometry, pose angle and scale, flags) is in named
---- fields; a shape's integer keys are strike's alone.
+--- Everything else a shape keeps (its local geometry `_l`, its pose stamp `_pose`, its kind,
+--- its class's own data) is in named fields; a shape's integer keys are strike's alone.
 ---
 --- A collider (colliders/Collider.lua) keeps its cached aggregates in its own array part
 --- too, so that moving one reads and writes a few adjacent numbers instead of a dozen
@@ -45,8 +65,17 @@ layout.MINX, layout.MINY, layout.MAXX, layout.MAXY = 1, 2, 3, 4
 layout.X, layout.Y = 5, 6
 --- The radius slot.
 layout.R = 7
---- Number of header slots (bounds, position, radius).
-layout.HEADER = 7
+--- The pose's slots.
+layout.ANGLE, layout.COS, layout.SIN, layout.SCALE, layout.DIRTY = 8, 9, 10, 11, 12
+--- The unscaled sizes' slots.
+layout.AREA, layout.RADIUS, layout.SHORT = 13, 14, 15
+--- Number of slots every shape has.
+layout.SHAPE_HEADER = 15
+--- A vertex shape's own slots.
+layout.COUNT, layout.HALF, layout.ROUND = 16, 17, 18
+layout.NCOS, layout.NSIN, layout.RX, layout.RY, layout.RSCALE = 19, 20, 21, 22, 23
+--- Number of header slots of a vertex shape (the header every shape has, then its own).
+layout.HEADER = 23
 
 --- A collider's slots (see above).
 layout.CRADIUS, layout.CAREA, layout.CAX, layout.CAY = 7, 8, 9, 10

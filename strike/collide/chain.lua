@@ -32,6 +32,7 @@
 local ROOT = (...):match('^(.-)%.collide%.[^%.]+$')
 local sat = require(ROOT .. '.collide.sat')
 local layout = require(ROOT .. '.base.layout')
+local COUNT, DIRTY = layout.COUNT, layout.DIRTY
 
 local result, polygonPolygon, polygonCircle = sat.result, sat.polygonPolygon, sat.polygonCircle
 local roundedCollide = require(ROOT .. '.collide.rounded').collide
@@ -72,7 +73,7 @@ chain.admissible = admissible
 -- of the push along n.
 local function polygonVerdict(S, P, mx, my)
   local nx, ny, x1, y1 = S[P1 + NX], S[P1 + NY], S[P1], S[P1 + VY]
-  local lastP = STRIDE * P._n + BASE
+  local lastP = STRIDE * P[COUNT] + BASE
   local rp = P[R]
   local sepN = huge
   for r = FIRST, lastP, STRIDE do
@@ -180,7 +181,7 @@ end
 ---@param out table an MTV-shaped table
 ---@return table out
 function chain.chainChain(A, B, out)
-  if A._dirty then A:_refresh() end
+  if A[DIRTY] then A:_refresh() end
   return result(out, A, B, A[P1 + NX], A[P1 + NY], 0, 1)
 end
 

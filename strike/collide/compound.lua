@@ -15,6 +15,7 @@ local MTV = require(ROOT .. '.collide.MTV')
 local Shape = require(ROOT .. '.base.Shape')
 local Collider = require(ROOT .. '.colliders.Collider')
 local layout = require(ROOT .. '.base.layout')
+local DIRTY = layout.DIRTY
 local dispatch = require(ROOT .. '.collide.dispatch')
 local pair, collideOf = dispatch.pair, dispatch.collide
 local args = require(ROOT .. '.collide.args')
@@ -74,8 +75,8 @@ function compound.collide(body1, body2, out)
   if s1 and s2 then
     -- One leaf each, the common case: straight-line code (LuaJIT traces one-trip loops
     -- badly), tested into the caller's `out` when there is one.
-    if s1._dirty then s1:_refresh() end
-    if s2._dirty then s2:_refresh() end
+    if s1[DIRTY] then s1:_refresh() end
+    if s2[DIRTY] then s2:_refresh() end
     if s1[MAXX] < s2[MINX] or s2[MAXX] < s1[MINX] or s1[MAXY] < s2[MINY] or s2[MAXY] < s1[MINY] then
       return false -- the bounds do not even meet
     end
@@ -99,12 +100,12 @@ function compound.collide(body1, body2, out)
   local bestDepth = 0
   for i = 1, n1 do
     local a = l1[i]
-    if a._dirty then a:_refresh() end
+    if a[DIRTY] then a:_refresh() end
     local ax0, ay0, ax1, ay1 = a[MINX], a[MINY], a[MAXX], a[MAXY]
     local row = collideOf[a.kind]
     for j = 1, n2 do
       local b = l2[j]
-      if b._dirty then b:_refresh() end
+      if b[DIRTY] then b:_refresh() end
       -- Bounds meet (closed intervals: an axis-aligned edge or a point has a flat box;
       -- the narrow phase decides touching), as two tests instead of four: fewer trace
       -- exits under LuaJIT.
@@ -164,7 +165,7 @@ local function sizes(list, n)
   local sum = 0
   for i = 1, n do
     local s = list[i]
-    if s._dirty then s:_refresh() end
+    if s[DIRTY] then s:_refresh() end
     sum = sum + (s[MAXX] - s[MINX]) + (s[MAXY] - s[MINY]) + abs(s[MINX]) + abs(s[MINY])
   end
   return sum

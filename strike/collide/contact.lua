@@ -25,6 +25,7 @@
 --- the polygon) or 2 * vertex + 1 (over that vertex), and 0 for two circles.
 local ROOT = (...):match('^(.-)%.collide%.[^%.]+$')
 local layout = require(ROOT .. '.base.layout')
+local COUNT = layout.COUNT
 
 local contact = {}
 
@@ -45,7 +46,7 @@ end
 -- The face of polygon P whose normal is most aligned with (nx, ny), and that cosine.
 local function alignedFace(P, nx, ny)
   local best, bi = -huge, 1
-  for i = 1, P._n do
+  for i = 1, P[COUNT] do
     local k = STRIDE * i + BASE
     local d = P[k + NX] * nx + P[k + NY] * ny
     if d > best then best, bi = d, i end
@@ -72,13 +73,13 @@ end
 -- (the pair is reported the other way round, see contact.polygons).
 local function clipFaces(out, Ref, r, I, f, side, flip)
   if flip then side = 1 - side end
-  local rk, rl = STRIDE * r + BASE, STRIDE * (r < Ref._n and r + 1 or 1) + BASE
+  local rk, rl = STRIDE * r + BASE, STRIDE * (r < Ref[COUNT] and r + 1 or 1) + BASE
   local v1x, v1y, v2x, v2y = Ref[rk], Ref[rk + VY], Ref[rl], Ref[rl + VY]
   local nx, ny = Ref[rk + NX], Ref[rk + NY]
   local tx, ty = v2x - v1x, v2y - v1y
   local len = sqrt(tx * tx + ty * ty)
   tx, ty = tx / len, ty / len
-  local ik, il = STRIDE * f + BASE, STRIDE * (f < I._n and f + 1 or 1) + BASE
+  local ik, il = STRIDE * f + BASE, STRIDE * (f < I[COUNT] and f + 1 or 1) + BASE
   local ax, ay, bx, by = I[ik], I[ik + VY], I[il], I[il + VY]
   local ca, cb = 0, 1 -- which corner each end is (see the header)
   -- side plane 1: dot(t, p - v1) >= 0
@@ -115,7 +116,7 @@ end
 
 -- The feature of polygon P nearest the point (cx, cy) as an id: 2 * face or 2 * vertex + 1.
 local function circleFeature(P, cx, cy)
-  local n = P._n
+  local n = P[COUNT]
   local best, bi = -huge, 1
   for i = 1, n do
     local k = STRIDE * i + BASE
@@ -162,7 +163,7 @@ function contact.polygons(A, B, nx, ny, depth, edge, out, flip)
   if k == 0 then
     -- Round-off left nothing behind the face: report the deepest vertex of B.
     local best, bj = huge, 1
-    for j = 1, B._n do
+    for j = 1, B[COUNT] do
       local q = STRIDE * j + BASE
       local p = nx * B[q] + ny * B[q + VY]
       if p < best then best, bj = p, j end
@@ -199,12 +200,12 @@ function contact.rounded(A, B, nx, ny, depth, edge, out, flip)
   local _, alignB = alignedFace(B, -nx, -ny)
   if alignA >= ALIGNED or alignB >= ALIGNED then return contact.polygons(A, B, nx, ny, depth, edge, out, flip) end
   local ia, ib, pa, pb = 1, 1, -huge, huge
-  for i = 1, A._n do
+  for i = 1, A[COUNT] do
     local q = STRIDE * i + BASE
     local p = nx * A[q] + ny * A[q + VY]
     if p > pa then pa, ia = p, i end
   end
-  for j = 1, B._n do
+  for j = 1, B[COUNT] do
     local q = STRIDE * j + BASE
     local p = nx * B[q] + ny * B[q + VY]
     if p < pb then pb, ib = p, j end

@@ -37,6 +37,7 @@
 --- scratch arrays: nothing is allocated per call once they have grown.
 local ROOT = (...):match('^(.-)%.collide%.[^%.]+$')
 local layout = require(ROOT .. '.base.layout')
+local COUNT = layout.COUNT
 
 local sqrt, huge, abs = math.sqrt, math.huge, math.abs
 local X, Y, R = layout.X, layout.Y, layout.R
@@ -62,7 +63,7 @@ local nDiff, nVert = 0, 0
 -- 1; a capsule of zero length, whose two vertices coincide, is one point too), a vertex,
 -- and the outward normal of the edge from vertex i to the next.
 local function coreCount(s)
-  local n = s._n
+  local n = s[COUNT]
   if not n then return 1 end
   if n == 2 and s[STRIDE + BASE] == s[2 * STRIDE + BASE] and s[STRIDE + BASE + VY] == s[2 * STRIDE + BASE + VY] then
     return 1
@@ -70,7 +71,7 @@ local function coreCount(s)
   return n
 end
 local function coreVertex(s, i)
-  if s._n then
+  if s[COUNT] then
     local k = STRIDE * i + BASE
     return s[k], s[k + VY]
   end

@@ -44,6 +44,7 @@
 local ROOT = (...):match('^(.-)%.collide%.[^%.]+$')
 local check = require(ROOT .. '.check')
 local layout = require(ROOT .. '.base.layout')
+local COUNT, DIRTY, RADIUS, SCALE = layout.COUNT, layout.DIRTY, layout.RADIUS, layout.SCALE
 local kinds = require(ROOT .. '.collide.dispatch').kind
 local limits = require(ROOT .. '.limits')
 
@@ -147,9 +148,9 @@ local clipIn, clipOut = 0, 0
 ---@return number nxHi
 ---@return number nyHi
 local function polygonClip(s, ox, oy, ux, uy)
-  if s._dirty then s:_refresh() end
+  if s[DIRTY] then s:_refresh() end
   local tin, tout, fin, fout = -huge, huge, 0, 0
-  for k = FIRST, STRIDE * s._n + BASE, STRIDE do
+  for k = FIRST, STRIDE * s[COUNT] + BASE, STRIDE do
     local nx, ny = s[k + NX], s[k + NY]
     local den = nx * ux + ny * uy
     local num = s[k + D] - (nx * ox + ny * oy)
@@ -195,7 +196,7 @@ ray.polygon = polygonClip
 ---@return number nxHi
 ---@return number nyHi
 local function segmentClip(s, ox, oy, ux, uy)
-  if s._dirty then s:_refresh() end
+  if s[DIRTY] then s:_refresh() end
   local ax, ay = s[P1] - ox, s[P1 + VY] - oy -- p1 relative to the origin
   local ex, ey = s[P2] - s[P1], s[P2 + VY] - s[P1 + VY]
   -- o + t u = p1 + s e: t = cross(a, e) / cross(u, e), s = cross(a, u) / cross(u, e).
@@ -238,7 +239,7 @@ ray.segment = segmentClip
 ---@return number nxHi
 ---@return number nyHi
 function ray.vertexShape(s, ox, oy, ux, uy)
-  if s._n == 2 then return segmentClip(s, ox, oy, ux, uy) end
+  if s[COUNT] == 2 then return segmentClip(s, ox, oy, ux, uy) end
   return polygonClip(s, ox, oy, ux, uy)
 end
 
@@ -269,7 +270,7 @@ end
 ---@return number nxHi
 ---@return number nyHi
 function ray.circle(s, ox, oy, ux, uy)
-  if s._dirty then s:_refresh() end
+  if s[DIRTY] then s:_refresh() end
   local r, cx, cy = s[R], s[X], s[Y]
   local mx, my = ox - cx, oy - cy
   local b = mx * ux + my * uy
@@ -320,8 +321,8 @@ end
 ---@return number nxHi
 ---@return number nyHi
 function ray.rounded(s, ox, oy, ux, uy)
-  if s._dirty then s:_refresh() end
-  local r, n = s[R], s._n
+  if s[DIRTY] then s:_refresh() end
+  local r, n = s[R], s[COUNT]
   local lo, hi, nxLo, nyLo, nxHi, nyHi = huge, -huge, 0, 0, 0, 0
   for i = 1, n do
     local k, l = STRIDE * i + BASE, STRIDE * (i < n and i + 1 or 1) + BASE
@@ -370,7 +371,7 @@ local castFar, castNear = 0, 0
 -- largest double.
 local function span(s, ox, oy, ux, uy)
   local dx, dy = s[X] - ox, s[Y] - oy
-  local rad = s._radius * s._scale
+  local rad = s[RADIUS] * s[SCALE]
   if not (abs(dx) + abs(dy) > FAR * rad) or rad == 0 then -- luacheck: ignore 581 (inf is far)
     shiftT, shiftX, shiftY, shiftFar, shiftNear = 0, ox, oy, 0, 0
     return kinds[s.kind].ray(s, ox, oy, ux, uy)

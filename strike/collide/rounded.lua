@@ -21,6 +21,7 @@
 local ROOT = (...):match('^(.-)%.collide%.[^%.]+$')
 local sat = require(ROOT .. '.collide.sat')
 local layout = require(ROOT .. '.base.layout')
+local COUNT, DIRTY = layout.COUNT, layout.DIRTY
 local limits = require(ROOT .. '.limits')
 
 local sqrt, huge = math.sqrt, math.huge
@@ -36,7 +37,7 @@ local rounded = {}
 -- face whose inside it is on (0 when it is a vertex). For a segment core (two faces, one
 -- segment), the face whose normal faces the point.
 local function nearestOnCore(P, px, py)
-  local n = P._n
+  local n = P[COUNT]
   local best, bx, by, bf = huge, 0, 0, 0
   for i = 1, n do
     local k, l = STRIDE * i + BASE, STRIDE * (i < n and i + 1 or 1) + BASE
@@ -69,13 +70,13 @@ end
 -- toward B) and separation, for cores that touch (distance 0).
 local function apart(A, B, out, flip, r, sx, sy, s)
   local best, ax, ay, bx, by, edge = huge, 0, 0, 0, 0, 0
-  for j = 1, B._n do
+  for j = 1, B[COUNT] do
     local q = STRIDE * j + BASE
     local px, py = B[q], B[q + VY]
     local d2, qx, qy, f = nearestOnCore(A, px, py)
     if d2 < best then best, ax, ay, bx, by, edge = d2, qx, qy, px, py, f end
   end
-  for i = 1, A._n do
+  for i = 1, A[COUNT] do
     local q = STRIDE * i + BASE
     local px, py = A[q], A[q + VY]
     local d2, qx, qy, f = nearestOnCore(B, px, py)
@@ -109,8 +110,8 @@ end
 ---@param flip boolean|nil
 ---@return table out
 function rounded.collide(A, B, out, flip)
-  if A._dirty then A:_refresh() end
-  if B._dirty then B:_refresh() end
+  if A[DIRTY] then A:_refresh() end
+  if B[DIRTY] then B:_refresh() end
   local r = A[R] + B[R]
   local sA, iA = maxSeparation(A, B)
   local k = STRIDE * iA + BASE

@@ -25,6 +25,7 @@
 --- the dispatch table (dispatch.lua) uses for the reversed order of a pair of kinds.
 local ROOT = (...):match('^(.-)%.collide%.[^%.]+$')
 local layout = require(ROOT .. '.base.layout')
+local COUNT, DIRTY, HALF = layout.COUNT, layout.DIRTY, layout.HALF
 local limits = require(ROOT .. '.limits')
 
 local sqrt, huge, abs = math.sqrt, math.huge, math.abs
@@ -68,8 +69,8 @@ sat.result = result
 local function maxSeparationWalk(A, B)
   -- (the layout's numbers as locals: an interpreter reads a local faster than an upvalue)
   local stride, first, vy, nxOff, nyOff, dOff = STRIDE, FIRST, VY, NX, NY, D
-  local na = A._n
-  local lastB = stride * B._n + BASE
+  local na = A[COUNT]
+  local lastB = stride * B[COUNT] + BASE
   local best, bi = -huge, 1
   local j, pj -- B's support record (its slot) and its projection
   local full = na == 2 and 2 or 1 -- faces scanned in full
@@ -115,10 +116,10 @@ end
 -- 308k against 164k pairs/s).
 local min, max = math.min, math.max
 local function maxSeparationScan(A, B)
-  local na = A._n
-  local lastB = STRIDE * B._n + BASE
+  local na = A[COUNT]
+  local lastB = STRIDE * B[COUNT] + BASE
   local best, bi = -huge, 1
-  local h = A._half
+  local h = A[HALF]
   if h > 0 then
     -- Centrally symmetric A: face i + h has the normal -n_i, so one projection of B on n_i
     -- gives both faces: min for face i, -max for face i + h. The result is the one of the
@@ -193,8 +194,8 @@ sat.roundScale = roundScale
 ---@param out table an MTV-shaped table
 ---@return table out
 function sat.polygonPolygon(A, B, out)
-  if A._dirty then A:_refresh() end
-  if B._dirty then B:_refresh() end
+  if A[DIRTY] then A:_refresh() end
+  if B[DIRTY] then B:_refresh() end
   local sA, iA = maxSeparation(A, B)
   local k = STRIDE * iA + BASE
   if sA >= 0 then return result(out, A, B, A[k + NX], A[k + NY], -sA, iA) end
@@ -208,10 +209,10 @@ end
 
 -- Polygon P against circle C; when `flip`, report it as C against P.
 local function polygonCircle(P, C, out, flip)
-  if P._dirty then P:_refresh() end
-  if C._dirty then C:_refresh() end
+  if P[DIRTY] then P:_refresh() end
+  if C[DIRTY] then C:_refresh() end
   local cx, cy, r = C[X], C[Y], C[R] + P[R] -- (a rounded P reaches P[R] beyond its core)
-  local n = P._n
+  local n = P[COUNT]
   local best, bi = -huge, 1
   local stride, yOff, nxOff, nyOff = STRIDE, VY, NX, NY -- (locals: see maxSeparationWalk)
   local k = BASE
@@ -268,8 +269,8 @@ sat.polygonCircle = polygonCircle
 ---@param out table
 ---@return table out
 function sat.circleCircle(A, B, out)
-  if A._dirty then A:_refresh() end
-  if B._dirty then B:_refresh() end
+  if A[DIRTY] then A:_refresh() end
+  if B[DIRTY] then B:_refresh() end
   local dx, dy = B[X] - A[X], B[Y] - A[Y]
   local d2 = dx * dx + dy * dy
   local r = A[R] + B[R]

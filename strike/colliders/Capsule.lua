@@ -23,7 +23,7 @@ Capsule.name = 'Capsule'
 function Capsule:new(x, y, dx, dy, angle)
   if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.Capsule:new') end
   Collider.new(self, CapsuleShape(x, y, dx, dy, angle))
-  self[layout.CANGLE] = self.shapes[1]._angle
+  self[layout.CANGLE] = self.shapes[1][layout.ANGLE]
 end
 
 --- Width and height (caps included), as they are now.

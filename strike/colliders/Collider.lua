@@ -9,7 +9,7 @@
 --- changes what it depends on clears the flag, and the next reader refreshes it.
 ---
 ---   flag (owner)          guards                        cleared by                   refreshed by
----   `_dirty` (shape)      its world data (layout.lua:   Shape:_touch: every          the kind's _refresh, called by
+---   slot DIRTY (shape)    its world data (layout.lua:   Shape:_touch: every          the kind's _refresh, called by
 ---                         bounds, radius, vertex        transform of the shape,      every reader first (getters,
 ---                         records)                      and Shape:_place, a          narrow phase, rays, contacts,
 ---                                                       collider moving it           collide/compound.lua)
@@ -44,6 +44,7 @@ local unpack, tnew = compat.unpack, compat.tableNew
 local rotate = require(ROOT .. '.vec').rotate
 local checkPose = Shape._checkPose
 local layout = require(ROOT .. '.base.layout')
+local RADIUS, SCALE = layout.RADIUS, layout.SCALE
 local args = require(ROOT .. '.collide.args')
 
 local cos, sin, huge, abs = math.cos, math.sin, math.huge, math.abs
@@ -502,18 +503,18 @@ end
 -- read a leaf's position slots (what getCentroid returns, without its check of self).
 local function moved(s, dx, dy)
   local x, y = s[X], s[Y]
-  return x + dx, y + dy, s._scale
+  return x + dx, y + dy, s[SCALE]
 end
 
 local function rotated(s, a, rx, ry)
   local x, y = s[X], s[Y]
   local dx, dy = rotate(x - rx, y - ry, cos(a), sin(a))
-  return rx + dx, ry + dy, s._scale
+  return rx + dx, ry + dy, s[SCALE]
 end
 
 local function scaled(s, sf, rx, ry)
   local x, y = s[X], s[Y]
-  return rx + (x - rx) * sf, ry + (y - ry) * sf, s._scale * sf
+  return rx + (x - rx) * sf, ry + (y - ry) * sf, s[SCALE] * sf
 end
 
 -- Give every leaf its new pose (and turn it by `turn`), or, when some leaf would leave
@@ -576,8 +577,8 @@ local function translateBy(self, dx, dy, fname)
   local s = self._single
   if s then -- (one leaf, the usual body: eachLeaf without its loops and calls)
     local x, y = s[X] + dx, s[Y] + dy
-    local extent = abs(x) + abs(y) + s._radius * s._scale
-    if extent - extent ~= 0 then checkPose(s, x, y, s._scale, fname) end -- (checkPose's test: it raises)
+    local extent = abs(x) + abs(y) + s[RADIUS] * s[SCALE]
+    if extent - extent ~= 0 then checkPose(s, x, y, s[SCALE], fname) end -- (checkPose's test: it raises)
     s[X], s[Y] = x, y -- (Shape:_place at the same scale)
     s:_touch()
   else

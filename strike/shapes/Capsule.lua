@@ -5,6 +5,8 @@
 local ROOT = (...):match('^(.-)%.shapes%.[^%.]+$')
 local VertexShape = require(ROOT .. '.base.VertexShape')
 local check = require(ROOT .. '.check')
+local layout = require(ROOT .. '.base.layout')
+local ANGLE, HALF, ROUND, SCALE, SHORT = layout.ANGLE, layout.HALF, layout.ROUND, layout.SCALE, layout.SHORT
 local limits = require(ROOT .. '.limits')
 
 local pi = math.pi
@@ -59,8 +61,8 @@ function Capsule:new(x, y, w, h, angle)
     local l = self._l
     l[3], l[4], l[7], l[8] = 1.0, 0.0, -1.0, 0.0
   end
-  self._half = 1
-  self._short = len > 0 and (len < r and len or r) or r
+  self[HALF] = 1
+  self[SHORT] = len > 0 and (len < r and len or r) or r
   self:_setRounding(r)
   self:_placeCentroid(x, y) -- (the exact centre)
   self:_checkNew('strike.Capsule')
@@ -71,8 +73,8 @@ end
 ---@return number width, number height
 function Capsule:getDimensions()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Capsule:getDimensions') end
-  local s = self._scale
-  local r = self._round * s
+  local s = self[SCALE]
+  local r = self[ROUND] * s
   local l = self._l
   return 2 * r, 2 * r + 2 * (l[2] < 0 and -l[2] or l[2]) * s
 end
@@ -83,7 +85,7 @@ function Capsule:unpack()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:unpack') end
   local w, h = self:getDimensions()
   local x, y = self:getCentroid()
-  return x, y, w, h, self._angle
+  return x, y, w, h, self[ANGLE]
 end
 
 return Capsule

@@ -5,6 +5,8 @@ local ROOT = (...):match('^(.-)%.shapes%.[^%.]+$')
 local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
 local layout = require(ROOT .. '.base.layout')
+local ANGLE, AREA, COUNT, DIRTY = layout.ANGLE, layout.AREA, layout.COUNT, layout.DIRTY
+local RADIUS, SCALE, SHORT = layout.RADIUS, layout.SCALE, layout.SHORT
 local limits = require(ROOT .. '.limits')
 
 local X, Y, R = layout.X, layout.Y, layout.R
@@ -43,33 +45,33 @@ function Circle:new(x, y, r, angle)
       .. ' must stay a normal double)'):format(check.describe(r), check.describe(MIN_LENGTH)))
   end
   self._r = r + 0.0 -- (a float: r * r must not be integer arithmetic, which wraps on Lua 5.3+)
-  self._area = pi * r * r
-  self._radius, self._short = self._r, self._r
+  self[AREA] = pi * r * r
+  self[RADIUS], self[SHORT] = self._r, self._r
   self:_setPose(x, y)
   self:_checkNew('strike.Circle')
   if angle ~= 0 then self:rotate(angle) end
 end
 
 function Circle:_refresh()
-  local r = self._r * self._scale
+  local r = self._r * self[SCALE]
   local x, y = self[X], self[Y]
   self[MINX], self[MINY], self[MAXX], self[MAXY] = x - r, y - r, x + r, y + r
   self[R] = r
-  self._dirty = false
+  self[DIRTY] = false
 end
 
 --- The radius now (the constructor's radius times the scale).
 ---@return number
 function Circle:getRadius()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getRadius') end
-  return self._r * self._scale
+  return self._r * self[SCALE]
 end
 
 --- The rounding radius: a circle is a point rounded by its radius (the same as getRadius).
 ---@return number
 function Circle:getRounding()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getRounding') end
-  return self._r * self._scale
+  return self._r * self[SCALE]
 end
 
 --- Minimum and maximum of the projection on the unit vector (nx, ny).
@@ -81,7 +83,7 @@ function Circle:project(nx, ny)
   number(nx, 'strike.Shape:project', 'nx')
   number(ny, 'strike.Shape:project', 'ny')
   local d = self[X] * nx + self[Y] * ny
-  local r = self._r * self._scale
+  local r = self._r * self[SCALE]
   return d - r, d + r
 end
 
@@ -92,7 +94,7 @@ end
 function Circle:containsPoint(x, y)
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:containsPoint') end
   x, y = Shape._point(x, y, 'strike.Shape:containsPoint')
-  local dx, dy, r = x - self[X], y - self[Y], self._r * self._scale
+  local dx, dy, r = x - self[X], y - self[Y], self._r * self[SCALE]
   return dx * dx + dy * dy < r * r
 end
 
@@ -134,7 +136,7 @@ end
 ---@return number x, number y
 function Circle:getSupport(nx, ny)
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getSupport') end
-  local r = self._r * self._scale
+  local r = self._r * self[SCALE]
   number(nx, 'strike.Shape:getSupport', 'nx')
   number(ny, 'strike.Shape:getSupport', 'ny')
   return self[X] + nx * r, self[Y] + ny * r
@@ -145,10 +147,10 @@ end
 local function axisToward(self, other)
   local cx, cy = self[X], self[Y]
   local tx, ty
-  if other and other._n then
-    if other._dirty then other:_refresh() end
+  if other and other[COUNT] then
+    if other[DIRTY] then other:_refresh() end
     local best = math.huge
-    for i = 1, other._n do
+    for i = 1, other[COUNT] do
       local x, y = other:getVertex(i)
       local dx, dy = x - cx, y - cy
       local d = dx * dx + dy * dy
@@ -174,7 +176,7 @@ local function circleEdgeIter(state, i)
   if i >= 1 then return nil end
   local self, other = state[1], state[2]
   local ax, ay = axisToward(self, other)
-  local r = self._r * self._scale
+  local r = self._r * self[SCALE]
   local px, py = self[X] + ax * r, self[Y] + ay * r
   -- the tangent at the point facing `other`, in positive winding
   return 1, px + ay * r, py - ax * r, px - ay * r, py + ax * r
@@ -211,14 +213,14 @@ end
 ---@return number
 function Circle:_farthest(px, py)
   local dx, dy = self[X] - px, self[Y] - py
-  return sqrt(dx * dx + dy * dy) + self._r * self._scale
+  return sqrt(dx * dx + dy * dy) + self._r * self[SCALE]
 end
 
 --- Arguments that rebuild the circle as it is now: x, y, radius, angle.
 ---@return number, number, number, number
 function Circle:unpack()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:unpack') end
-  return self[X], self[Y], self._r * self._scale, self._angle
+  return self[X], self[Y], self._r * self[SCALE], self[ANGLE]
 end
 
 return Circle

@@ -2,6 +2,8 @@
 local ROOT = (...):match('^(.-)%.shapes%.[^%.]+$')
 local VertexShape = require(ROOT .. '.base.VertexShape')
 local check = require(ROOT .. '.check')
+local layout = require(ROOT .. '.base.layout')
+local COUNT, DIRTY, ROUND, SCALE = layout.COUNT, layout.DIRTY, layout.ROUND, layout.SCALE
 local limits = require(ROOT .. '.limits')
 local hull = require(ROOT .. '.geometry.hull')
 local polygon = require(ROOT .. '.geometry.polygon')
@@ -108,7 +110,7 @@ local function seamFaces(a, b)
   for _, s in ipairs({ a, b }) do
     local seams = s._seams
     if seams then
-      for i = 1, s._n do
+      for i = 1, s[COUNT] do
         if seams[i] then
           local k = 5 * count
           src[k + 1], src[k + 2], src[k + 3], src[k + 4] = s:getEdge(i)
@@ -132,15 +134,15 @@ end
 ---@return strike.ConvexPolygon|false
 function ConvexPolygon:merge(other)
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.ConvexPolygon:merge') end
-  if type(other) ~= 'table' or other.kind ~= 'polygon' or not other._n or other._n < 3 then return false end
+  if type(other) ~= 'table' or other.kind ~= 'polygon' or not other[COUNT] or other[COUNT] < 3 then return false end
   if self.kind ~= 'polygon' then return false end -- (a rounded polygon's union is never a polygon)
-  if self._dirty then self:_refresh() end
-  if other._dirty then other:_refresh() end
+  if self[DIRTY] then self:_refresh() end
+  if other[DIRTY] then other:_refresh() end
   local tol = 1e-9 * max(self:getRadius(), other:getRadius())
   if max(maxSeparation(self, other), maxSeparation(other, self)) < -tol then return false end
   local xs, ys, n = {}, {}, 0
   for _, s in ipairs({ self, other }) do
-    for i = 1, s._n do
+    for i = 1, s[COUNT] do
       n = n + 1
       xs[n], ys[n] = s:getVertex(i)
     end
@@ -167,11 +169,11 @@ end
 function ConvexPolygon:unpack()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:unpack') end
   local v = self:getVertices()
-  if self._round > 0 then
-    v.radius = self._round * self._scale
+  if self[ROUND] > 0 then
+    v.radius = self[ROUND] * self[SCALE]
     return v
   end
-  return unpack(v, 1, 2 * self._n)
+  return unpack(v, 1, 2 * self[COUNT])
 end
 
 return ConvexPolygon

@@ -2,6 +2,8 @@
 local ROOT = (...):match('^(.-)%.shapes%.[^%.]+$')
 local ConvexPolygon = require(ROOT .. '.shapes.ConvexPolygon')
 local check = require(ROOT .. '.check')
+local layout = require(ROOT .. '.base.layout')
+local ANGLE, SCALE = layout.ANGLE, layout.SCALE
 local badSelf, type = check.badSelf, type
 
 local sin, cos, pi, floor, max, min = math.sin, math.cos, math.pi, math.floor, math.max, math.min
@@ -46,9 +48,9 @@ end
 ---@return number, number, number, number, integer, number
 function Ellipse:unpack()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:unpack') end
-  local s = self._scale
+  local s = self[SCALE]
   local cx, cy = self:getCentroid()
-  return cx, cy, self.a * s, self.b * s, self.n, self._angle
+  return cx, cy, self.a * s, self.b * s, self.n, self[ANGLE]
 end
 
 return Ellipse

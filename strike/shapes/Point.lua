@@ -4,6 +4,8 @@
 local ROOT = (...):match('^(.-)%.shapes%.[^%.]+$')
 local Circle = require(ROOT .. '.shapes.Circle')
 local check = require(ROOT .. '.check')
+local layout = require(ROOT .. '.base.layout')
+local AREA, RADIUS, SHORT = layout.AREA, layout.RADIUS, layout.SHORT
 local badSelf, type = check.badSelf, type
 
 ---@class strike.Point : strike.Circle
@@ -17,7 +19,7 @@ function Point:new(x, y)
   if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.Point:new') end
   check.number(x, 'strike.Point', 'x')
   check.number(y, 'strike.Point', 'y')
-  self._r, self._area, self._radius, self._short = 0, 0, 0, 0
+  self._r, self[AREA], self[RADIUS], self[SHORT] = 0, 0, 0, 0
   self:_setPose(x, y)
   self:_checkNew('strike.Point')
 end

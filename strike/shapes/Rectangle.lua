@@ -2,6 +2,8 @@
 local ROOT = (...):match('^(.-)%.shapes%.[^%.]+$')
 local ConvexPolygon = require(ROOT .. '.shapes.ConvexPolygon')
 local check = require(ROOT .. '.check')
+local layout = require(ROOT .. '.base.layout')
+local ANGLE, ROUND, SCALE = layout.ANGLE, layout.ROUND, layout.SCALE
 local badSelf, type = check.badSelf, type
 
 ---@class strike.Rectangle : strike.ConvexPolygon
@@ -50,10 +52,10 @@ end
 ---@return number, number, number, number, number, number|nil
 function Rectangle:unpack()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:unpack') end
-  local s = self._scale
+  local s = self[SCALE]
   local x, y = self:getCentroid()
-  if self._round > 0 then return x, y, self.dx * s, self.dy * s, self._angle, self._round * s end
-  return x, y, self.dx * s, self.dy * s, self._angle
+  if self[ROUND] > 0 then return x, y, self.dx * s, self.dy * s, self[ANGLE], self[ROUND] * s end
+  return x, y, self.dx * s, self.dy * s, self[ANGLE]
 end
 
 return Rectangle

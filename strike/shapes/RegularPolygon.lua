@@ -2,6 +2,8 @@
 local ROOT = (...):match('^(.-)%.shapes%.[^%.]+$')
 local ConvexPolygon = require(ROOT .. '.shapes.ConvexPolygon')
 local check = require(ROOT .. '.check')
+local layout = require(ROOT .. '.base.layout')
+local ANGLE, SCALE = layout.ANGLE, layout.SCALE
 local badSelf, type = check.badSelf, type
 
 local sin, cos, pi = math.sin, math.cos, math.pi
@@ -48,7 +50,7 @@ end
 function RegularPolygon:unpack()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:unpack') end
   local cx, cy = self:getCentroid()
-  return cx, cy, self.n, self.radius * self._scale, self._angle
+  return cx, cy, self.n, self.radius * self[SCALE], self[ANGLE]
 end
 
 return RegularPolygon

@@ -35,6 +35,7 @@ local finite = check.finite
 local pairRule, queryFilter, checkQuery = filter.pair, filter.query, filter.checkQuery
 local sqrt, huge, abs, type = math.sqrt, math.huge, math.abs, type
 local X, Y = layout.X, layout.Y
+local DIRTY, AREA, RADIUS = layout.DIRTY, layout.AREA, layout.RADIUS
 local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
 
 -- Pair keys and sort keys pack two numbers below 2^26 into one double.
@@ -125,7 +126,7 @@ local function flush(self)
       local b = body[id]
       if b._pose then -- a shape: its bounds without the getter's checks
         local x0, y0, x1, y1
-        if b._dirty then
+        if b[DIRTY] then
           -- (a polygon that only moved: its last bounds, moved; its vertices wait for the
           -- narrow phase, which refreshes only the shapes in a pair whose boxes meet)
           local movedBounds = b._movedBounds
@@ -737,7 +738,7 @@ function Space:queryRect(x, y, w, h, filterArg, out)
   local hw, hh = w / 2, h / 2
   local l = probe._l
   l[1], l[2], l[5], l[6], l[9], l[10], l[13], l[14] = -hw, -hh, hw, -hh, hw, hh, -hw, hh
-  probe.dx, probe.dy, probe._area, probe._radius = w, h, w * h, sqrt(hw * hw + hh * hh)
+  probe.dx, probe.dy, probe[AREA], probe[RADIUS] = w, h, w * h, sqrt(hw * hw + hh * hh)
   probe[X], probe[Y] = x + hw, y + hh
   probe:_touch()
   return overlapping(self, probe, filterArg, out)
