@@ -5,6 +5,7 @@ local S = require 'strike'
 local expect = require('spec.helpers.expect')
 local limits = require('strike.limits')
 local ChainSegment = require('strike.base.ChainSegment')
+local layout = require('strike.base.layout')
 
 local near, nearList, raisesAt = expect.near, expect.nearList, expect.raisesAt
 local H, T = S.hapes, S.trikers
@@ -104,8 +105,8 @@ describe('tiny geometry', function()
     local c = T.Chain({ 0, 0, 1e-100, 0, 1e-100, 1e-100, 0, 1e-100 }, true)
     for s in c:elems() do
       unitNormals(s)
-      unit(s._g1x, s._g1y, 'ghost normal 1')
-      unit(s._g2x, s._g2y, 'ghost normal 2')
+      unit(s[layout.G1X], s[layout.G1Y], 'ghost normal 1')
+      unit(s[layout.G2X], s[layout.G2Y], 'ghost normal 2')
     end
   end)
 

@@ -246,7 +246,8 @@ describe('unit normals', function()
               i, g(nx), g(ny), gen.show(leaf)))
           end
           if leaf.isConvex then
-            assert(isUnit(leaf._g1x, leaf._g1y) and isUnit(leaf._g2x, leaf._g2y), 'chain ghost normals')
+            assert(isUnit(leaf[layout.G1X], leaf[layout.G1Y]) and isUnit(leaf[layout.G2X], leaf[layout.G2Y]),
+              'chain ghost normals')
           end
         end
       else

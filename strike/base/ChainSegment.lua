@@ -16,21 +16,27 @@
 --- Corners: the corner at p1 is convex when the chain turns there so that the free side
 --- gets wider: cross(p1 - prev, p2 - p1) > 0 (a left turn with y up); likewise at p2. An
 --- open end counts as convex, like the end of a lone edge. The narrow phase
---- (strike/collide/chain.lua) reads these, refreshed with the world vertices:
+--- (strike/collide/chain.lua) reads these, in slots after the vertex records (layout.lua),
+--- refreshed with the world vertices:
 ---   vertex 1 and 2      p1 and p2, and face 1's normal n, the segment's own (VertexShape's
 ---                       records, see strike/base/layout.lua)
----   _g1x, _g1y          at p1: the previous segment's unit normal, or at an open start
+---   G1X, G1Y            at p1: the previous segment's unit normal, or at an open start
 ---                       the outward tangent -(p2 - p1) / len
----   _g2x, _g2y          at p2: the next segment's unit normal, or at an open end the
+---   G2X, G2Y            at p2: the next segment's unit normal, or at an open end the
 ---                       outward tangent (p2 - p1) / len
----   _convex1, _convex2  whether the corner at p1 (p2) is convex (true at an open end)
----   _hasPrev, _hasNext  whether there is a neighbour there
----   _wprevx, _wprevy, _wnextx, _wnexty   world ghost vertices (when present)
+---   CONVEX1, CONVEX2    whether the corner at p1 (p2) is convex (true at an open end)
+---   HASPREV, HASNEXT    whether there is a neighbour there
+--- The ghost vertices are kept local (LPREVX ... LNEXTY) and put in world coordinates when
+--- asked for (getGhostVertices): nothing else reads them.
 local ROOT = (...):match('^(.-)%.base%.[^%.]+$')
 local Edge = require(ROOT .. '.shapes.Edge')
 local check = require(ROOT .. '.check')
 local layout = require(ROOT .. '.base.layout')
-local COS, DIRTY, SCALE, SIN = layout.COS, layout.DIRTY, layout.SCALE, layout.SIN
+local CONVEX1, CONVEX2, G1X, G1Y = layout.CONVEX1, layout.CONVEX2, layout.G1X, layout.G1Y
+local G2X, G2Y, HASNEXT, HASPREV = layout.G2X, layout.G2Y, layout.HASNEXT, layout.HASPREV
+local LG1X, LG1Y, LG2X, LG2Y = layout.LG1X, layout.LG1Y, layout.LG2X, layout.LG2Y
+local LNEXTX, LNEXTY, LPREVX, LPREVY = layout.LNEXTX, layout.LNEXTY, layout.LPREVX, layout.LPREVY
+local COS, SCALE, SIN = layout.COS, layout.SCALE, layout.SIN
 local rotate = require(ROOT .. '.vec').rotate
 
 local X, Y = layout.X, layout.Y
@@ -45,10 +51,10 @@ ChainSegment.kind = 'chain'
 
 local FNAME = 'strike.ChainSegment'
 
---- The empty instance (class.lua): an edge's slots, and room for a segment's named fields (its
---- ghost vertices and corners: 16).
+--- The empty instance (class.lua): an edge's slots and a segment's own (layout.lua), and room
+--- for the named fields every shape has.
 ---@return table
-function ChainSegment._alloc() return Edge._alloc2With(16) end
+function ChainSegment._alloc() return Edge._allocSlots(layout.CHAIN_SIZE) end
 
 -- An optional ghost vertex: both coordinates, or neither.
 local function optGhost(x, y, what)
@@ -90,46 +96,37 @@ function ChainSegment:new(x1, y1, x2, y2, x0, y0, x3, y3)
   if hasPrev then checkLength(FNAME, x0, y0, x1, y1, 'previous segment (previous point to p1)') end
   if hasNext then checkLength(FNAME, x2, y2, x3, y3, 'next segment (p2 to the next point)') end
   Edge.new(self, x1, y1, x2, y2)
+  for k = layout.HASPREV, layout.CHAIN_SIZE do self[k] = 0 end -- (no holes: an absent ghost is 0)
   local cx, cy = self:getCentroid()
   local ex, ey = unit(x2 - x1, y2 - y1)
-  self._hasPrev, self._hasNext = hasPrev, hasNext
+  self[HASPREV], self[HASNEXT] = hasPrev, hasNext
   if hasPrev then
     local dx, dy = unit(x1 - x0, y1 - y0)
-    self._lprevx, self._lprevy = x0 - cx, y0 - cy
-    self._lg1x, self._lg1y = dy, -dx
-    self._convex1 = dx * ey - dy * ex > 0
+    self[LPREVX], self[LPREVY] = x0 - cx, y0 - cy
+    self[LG1X], self[LG1Y] = dy, -dx
+    self[CONVEX1] = dx * ey - dy * ex > 0
   else
-    self._lg1x, self._lg1y = -ex, -ey
-    self._convex1 = true
+    self[LG1X], self[LG1Y] = -ex, -ey
+    self[CONVEX1] = true
   end
   if hasNext then
     local dx, dy = unit(x3 - x2, y3 - y2)
-    self._lnextx, self._lnexty = x3 - cx, y3 - cy
-    self._lg2x, self._lg2y = dy, -dx
-    self._convex2 = ex * dy - ey * dx > 0
+    self[LNEXTX], self[LNEXTY] = x3 - cx, y3 - cy
+    self[LG2X], self[LG2Y] = dy, -dx
+    self[CONVEX2] = ex * dy - ey * dx > 0
   else
-    self._lg2x, self._lg2y = ex, ey
-    self._convex2 = true
+    self[LG2X], self[LG2Y] = ex, ey
+    self[CONVEX2] = true
   end
 end
 
 --- Recompute the world vertices, normals and bounds (VertexShape's refresh), then the
---- world ghost vertices and the corner normals.
+--- corner normals.
 function ChainSegment:_refresh()
   Edge._refresh(self)
-  local c, s, k = self[COS], self[SIN], self[SCALE]
-  local sc, ss = c * k, s * k
-  local x0, y0 = self[X], self[Y]
-  if self._hasPrev then
-    local x, y = rotate(self._lprevx, self._lprevy, sc, ss)
-    self._wprevx, self._wprevy = x0 + x, y0 + y
-  end
-  if self._hasNext then
-    local x, y = rotate(self._lnextx, self._lnexty, sc, ss)
-    self._wnextx, self._wnexty = x0 + x, y0 + y
-  end
-  self._g1x, self._g1y = rotate(self._lg1x, self._lg1y, c, s)
-  self._g2x, self._g2y = rotate(self._lg2x, self._lg2y, c, s)
+  local c, s = self[COS], self[SIN]
+  self[G1X], self[G1Y] = rotate(self[LG1X], self[LG1Y], c, s)
+  self[G2X], self[G2Y] = rotate(self[LG2X], self[LG2Y], c, s)
 end
 
 --- The ghost vertices in world coordinates: the chain's point before p1 and the one after
@@ -137,10 +134,18 @@ end
 ---@return number|nil x0, number|nil y0, number|nil x3, number|nil y3
 function ChainSegment:getGhostVertices()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.ChainSegment:getGhostVertices') end
-  if self[DIRTY] then self:_refresh() end
+  local k = self[SCALE]
+  local sc, ss = self[COS] * k, self[SIN] * k
+  local cx, cy = self[X], self[Y]
   local x0, y0, x3, y3
-  if self._hasPrev then x0, y0 = self._wprevx, self._wprevy end
-  if self._hasNext then x3, y3 = self._wnextx, self._wnexty end
+  if self[HASPREV] then
+    local x, y = rotate(self[LPREVX], self[LPREVY], sc, ss)
+    x0, y0 = cx + x, cy + y
+  end
+  if self[HASNEXT] then
+    local x, y = rotate(self[LNEXTX], self[LNEXTY], sc, ss)
+    x3, y3 = cx + x, cy + y
+  end
   return x0, y0, x3, y3
 end
 
@@ -150,7 +155,7 @@ end
 ---@return boolean|nil
 function ChainSegment:isConvex(i)
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.ChainSegment:isConvex') end
-  if i == 1 then return self._convex1 elseif i == 2 then return self._convex2 end
+  if i == 1 then return self[CONVEX1] elseif i == 2 then return self[CONVEX2] end
   return nil
 end
 

@@ -80,22 +80,27 @@ function VertexShape._alloc(n)
   } -- (layout.size(5) slots)
 end
 
---- The empty instance of a shape with two vertex records (edges, capsules, chain segments),
---- with room for 8 named fields, or `nhash` when a subclass asks for more. (As an `_alloc`,
---- it gets the constructor's arguments, which it ignores.)
----@param nhash integer|nil
+--- The empty instance of a shape with two vertex records (edges, capsules), as an `_alloc`
+--- (class.lua; it ignores the constructor's arguments).
 ---@return table
-local function alloc2(nhash)
-  if tnew then return tnew(layout.size(2), nhash) end
+function VertexShape._alloc2()
+  if tnew then return tnew(layout.size(2), 8) end
   return {
     0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0
   } -- (layout.size(2) slots)
 end
-VertexShape._alloc2With = alloc2
 
---- The empty instance of a shape with two vertex records, as an `_alloc` (class.lua).
+--- An empty instance with `n` array slots (zeros) and room for 8 named fields, for a
+--- subclass with slots of its own (ChainSegment). On the interpreters the first named field
+--- lays the array out anew anyway, at a power of two.
+---@param n integer
 ---@return table
-function VertexShape._alloc2() return alloc2(8) end
+function VertexShape._allocSlots(n)
+  if tnew then return tnew(n, 8) end
+  local t = {}
+  for k = 1, n do t[k] = 0 end
+  return t
+end
 
 -- Normals this close to antiparallel are made exactly antiparallel (a change far below
 -- any coordinate's rounding noise), so that opposite faces can share one projection.

@@ -39,6 +39,14 @@
 ---   D        the offset of edge i's line along that normal: dot(normal i, vertex i)
 --- All refreshed when dirty. A shape with n vertices has size(n) slots.
 ---
+--- A chain segment (base/ChainSegment.lua: an edge, two vertex records) goes on after them
+--- with its neighbours' data, from slot size(2) + 1 to CHAIN_SIZE:
+---   HASPREV, HASNEXT    whether it has a neighbour before p1 / after p2 (booleans)
+---   CONVEX1, CONVEX2    whether the corner at p1 / p2 is convex (booleans)
+---   G1X, G1Y, G2X, G2Y  the corner normals in world coordinates          refreshed when dirty
+---   LG1X ... LG2Y       the same, local (unrotated)                       set at construction
+---   LPREVX, LPREVY, LNEXTX, LNEXTY  the ghost vertices, local (0 when absent)
+---
 --- Everything else a shape keeps (its local geometry `_l`, its pose stamp `_pose`, its kind,
 --- its class's own data) is in named fields; a shape's integer keys are strike's alone.
 ---
@@ -84,6 +92,14 @@ layout.CANGLE = 16
 --- Number of a collider's slots.
 layout.CSIZE = 16
 
+--- A chain segment's slots, after its two vertex records (see above).
+layout.HASPREV, layout.HASNEXT, layout.CONVEX1, layout.CONVEX2 = 34, 35, 36, 37
+layout.G1X, layout.G1Y, layout.G2X, layout.G2Y = 38, 39, 40, 41
+layout.LG1X, layout.LG1Y, layout.LG2X, layout.LG2Y = 42, 43, 44, 45
+layout.LPREVX, layout.LPREVY, layout.LNEXTX, layout.LNEXTY = 46, 47, 48, 49
+--- Number of a chain segment's slots.
+layout.CHAIN_SIZE = 49
+
 --- Slots per vertex record.
 layout.STRIDE = 5
 --- Offsets in a vertex record.
@@ -107,5 +123,8 @@ function layout.last(n) return layout.STRIDE * n + layout.BASE end
 ---@param n integer
 ---@return integer
 function layout.size(n) return layout.HEADER + layout.STRIDE * n end
+
+-- (the chain segment's slots start right after its two vertex records)
+assert(layout.HASPREV == layout.size(2) + 1, 'layout.lua: the chain segment slots must follow size(2)')
 
 return layout

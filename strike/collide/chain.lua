@@ -32,6 +32,8 @@
 local ROOT = (...):match('^(.-)%.collide%.[^%.]+$')
 local sat = require(ROOT .. '.collide.sat')
 local layout = require(ROOT .. '.base.layout')
+local CONVEX1, CONVEX2, G1X, G1Y = layout.CONVEX1, layout.CONVEX2, layout.G1X, layout.G1Y
+local G2X, G2Y, HASNEXT, HASPREV = layout.G2X, layout.G2Y, layout.HASNEXT, layout.HASPREV
 local COUNT, DIRTY = layout.COUNT, layout.DIRTY
 
 local result, polygonPolygon, polygonCircle = sat.result, sat.polygonPolygon, sat.polygonCircle
@@ -54,9 +56,9 @@ local function admissible(S, mx, my)
   local c = nx * my - ny * mx -- cross(n, m) = m . e: < 0 leans toward p1, > 0 toward p2
   if c <= TOL and c >= -TOL and nx * mx + ny * my > 0 then return true end
   if c < 0 then
-    return S._convex1 and S._g1x * my - S._g1y * mx >= -TOL -- cross(g1, m) >= 0
+    return S[CONVEX1] and S[G1X] * my - S[G1Y] * mx >= -TOL -- cross(g1, m) >= 0
   end
-  return S._convex2 and mx * S._g2y - my * S._g2x >= -TOL -- cross(m, g2) >= 0
+  return S[CONVEX2] and mx * S[G2Y] - my * S[G2X] >= -TOL -- cross(m, g2) >= 0
 end
 
 --- admissible(segment, mx, my): true when the unit normal (mx, my), pointing from the chain
@@ -82,8 +84,8 @@ local function polygonVerdict(S, P, mx, my)
   end
   sepN = sepN - rp
   local c = nx * my - ny * mx
-  if c < 0 and S._hasPrev and S._convex1 then
-    local gx, gy = S._g1x, S._g1y
+  if c < 0 and S[HASPREV] and S[CONVEX1] then
+    local gx, gy = S[G1X], S[G1Y]
     local reach, sepG = huge, huge -- reach: min over P of e . (v - p1), e = (-ny, nx)
     for k = FIRST, lastP, STRIDE do
       local dx, dy = P[k] - x1, P[k + VY] - y1
@@ -92,8 +94,8 @@ local function polygonVerdict(S, P, mx, my)
       if s < sepG then sepG = s end
     end
     if reach - rp < 0 and sepG - rp > sepN then return false end
-  elseif c > 0 and S._hasNext and S._convex2 then
-    local gx, gy = S._g2x, S._g2y
+  elseif c > 0 and S[HASNEXT] and S[CONVEX2] then
+    local gx, gy = S[G2X], S[G2Y]
     local x2, y2 = S[P2], S[P2 + VY]
     local reach, sepG = -huge, huge -- reach: max over P of e . (v - p2)
     for k = FIRST, lastP, STRIDE do
@@ -114,11 +116,11 @@ local function circleVerdict(S, C, mx, my)
   local dx, dy = cx - x1, cy - y1
   local sepN = nx * dx + ny * dy - r
   local c = nx * my - ny * mx
-  if c < 0 and S._hasPrev and S._convex1 then
-    if nx * dy - ny * dx - r < 0 and S._g1x * dx + S._g1y * dy - r > sepN then return false end
-  elseif c > 0 and S._hasNext and S._convex2 then
+  if c < 0 and S[HASPREV] and S[CONVEX1] then
+    if nx * dy - ny * dx - r < 0 and S[G1X] * dx + S[G1Y] * dy - r > sepN then return false end
+  elseif c > 0 and S[HASNEXT] and S[CONVEX2] then
     dx, dy = cx - S[P2], cy - S[P2 + VY]
-    if nx * dy - ny * dx + r > 0 and S._g2x * dx + S._g2y * dy - r > sepN then return false end
+    if nx * dy - ny * dx + r > 0 and S[G2X] * dx + S[G2Y] * dy - r > sepN then return false end
   end
   return -sepN
 end
