@@ -91,6 +91,40 @@ function ConvexPolygon:new(...)
   self:_checkNew(fname)
 end
 
+-- The largest vertex count, and the range of sizes, for which a constructor that knows its
+-- points form a convex polygon (Rectangle, RegularPolygon) may skip the hull (see below).
+local SAFE_COUNT, SAFE_SMALL, SAFE_LARGE, SAFE_RELATIVE = 64, 1e-80, 1e80, 1e-6
+
+--- Whether a polygon of `n` vertices about (x, y) whose every edge is at least `short` long
+--- and which reaches at most `size` from (x, y) may be built by ConvexPolygon._fromConvex:
+--- few vertices, sizes far inside strike's limits (limits.lua), and edges far longer than
+--- the rounding of coordinates near (x, y), so that its points stay distinct and convex
+--- once rounded. Outside this, the constructor takes the general path, with its errors.
+---@param x number
+---@param y number
+---@param n integer
+---@param short number
+---@param size number
+---@return boolean
+function ConvexPolygon._safeConvex(x, y, n, short, size)
+  return n <= SAFE_COUNT and short >= SAFE_SMALL and size <= SAFE_LARGE
+    and short >= SAFE_RELATIVE * (abs(x) + abs(y))
+end
+
+--- Build from points known to form a strictly convex polygon, distinct, in positive winding
+--- and starting from the first point given (floats, count n, in ConvexPolygon._safeConvex's
+--- range): what ConvexPolygon:new does, without the hull that checks and orders them (on such
+--- points the hull returns them as they are). The result is the same to the bit.
+---@param xs number[]
+---@param ys number[]
+---@param n integer
+---@param fname string
+function ConvexPolygon:_fromConvex(xs, ys, n, fname)
+  local area, cx, cy = polygon.areaCentroid(xs, ys, n)
+  self:_setVertices(xs, ys, n, cx, cy, area)
+  self:_checkNew(fname)
+end
+
 --- Raise an error at the caller's line unless r is a rounding radius strike accepts: a
 --- number from MIN_LENGTH to MAX_LENGTH (limits.lua). `fname` names the constructor.
 ---@param fname string

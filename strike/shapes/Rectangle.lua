@@ -6,6 +6,9 @@ local layout = require(ROOT .. '.base.layout')
 local ANGLE, ROUND, SCALE = layout.ANGLE, layout.ROUND, layout.SCALE
 local badSelf, type = check.badSelf, type
 
+local safeConvex = ConvexPolygon._safeConvex
+local xs, ys = {}, {} -- (the corners, for the constructor: never kept)
+
 ---@class strike.Rectangle : strike.ConvexPolygon
 local Rectangle = ConvexPolygon:extend()
 Rectangle.name = 'Rectangle'
@@ -40,6 +43,11 @@ function Rectangle:new(x, y, dx, dy, angle, radius)
     end
     local cx, cy = hx - radius, hy - radius
     Rectangle.super.new(self, { x - cx, y - cy, x + cx, y - cy, x + cx, y + cy, x - cx, y + cy, radius = radius })
+  elseif safeConvex(x, y, 4, hx < hy and dx or dy, hx + hy) then
+    -- (four corners in positive winding: the hull would return them as they are)
+    xs[1], xs[2], xs[3], xs[4] = x - hx + 0.0, x + hx + 0.0, x + hx + 0.0, x - hx + 0.0
+    ys[1], ys[2], ys[3], ys[4] = y - hy + 0.0, y - hy + 0.0, y + hy + 0.0, y + hy + 0.0
+    self:_fromConvex(xs, ys, 4, 'strike.Rectangle')
   else
     Rectangle.super.new(self, x - hx, y - hy, x + hx, y - hy, x + hx, y + hy, x - hx, y + hy)
   end

@@ -7,6 +7,7 @@ local ANGLE, SCALE = layout.ANGLE, layout.SCALE
 local badSelf, type = check.badSelf, type
 
 local sin, cos, pi = math.sin, math.cos, math.pi
+local xs, ys = {}, {} -- (the vertices, for the constructor: never kept)
 
 ---@class strike.RegularPolygon : strike.ConvexPolygon
 local RegularPolygon = ConvexPolygon:extend()
@@ -34,13 +35,23 @@ function RegularPolygon:new(x, y, n, radius, angle)
   check.integer(n, 'strike.RegularPolygon', 'side count', 3, 4096)
   check.positive(radius, 'strike.RegularPolygon', 'radius')
   angle = check.optNumber(angle, 'strike.RegularPolygon', 'angle', 0)
-  local pts = {}
-  for i = 1, n do
-    local a = -2 * pi * i / n
-    pts[2 * i - 1], pts[2 * i] = x + radius * sin(a), y + radius * cos(a)
-  end
   self.n, self.radius = n, radius
-  RegularPolygon.super.new(self, pts)
+  -- (edges 2 radius sin(pi / n) long, at least 0.098 radius for n <= 64)
+  if ConvexPolygon._safeConvex(x, y, n, 0.098 * radius, radius) then
+    -- (in positive winding from vertex 1: the hull would return them as they are)
+    for i = 1, n do
+      local a = -2 * pi * i / n
+      xs[i], ys[i] = x + radius * sin(a) + 0.0, y + radius * cos(a) + 0.0
+    end
+    self:_fromConvex(xs, ys, n, 'strike.RegularPolygon')
+  else
+    local pts = {}
+    for i = 1, n do
+      local a = -2 * pi * i / n
+      pts[2 * i - 1], pts[2 * i] = x + radius * sin(a), y + radius * cos(a)
+    end
+    RegularPolygon.super.new(self, pts)
+  end
   self:_placeCentroid(x, y) -- the exact centre
   if angle ~= 0 then self:rotate(angle) end
 end
