@@ -586,18 +586,37 @@ local function checkId(self, fn, id)
   return leaf
 end
 
--- Give proxy id the fat box of its exact box moved by (dx, dy) since last time.
-local function fatten(self, id, minx, miny, maxx, maxy, dx, dy)
-  local s = (maxx - minx) + (maxy - miny)
-  local m = s * MARGIN
-  local x0, y0, x1, y1 = minx - m, miny - m, maxx + m, maxy + m
-  local limit = s * PREDICT_LIMIT
-  -- (no branches: LuaJIT compiles min and max to single instructions, and a branch here,
-  -- in the loop that places every moved body, made side traces it could not compile,
-  -- "register coalescing too complex", hundreds of times a second at N = 5,000)
-  dx, dy = min(max(dx * PREDICT, -limit), limit), min(max(dy * PREDICT, -limit), limit)
-  self.fx0[id], self.fy0[id] = x0 + min(dx, 0), y0 + min(dy, 0)
-  self.fx1[id], self.fy1[id] = x1 + max(dx, 0), y1 + max(dy, 0)
+-- Give proxy id the fat box of its exact box moved by (dx, dy) since last time: grown by the
+-- margin on every side, and by the predicted move (PREDICT times the last one, at most
+-- PREDICT_LIMIT of the box's size each way) on the side it moves to. Two spellings, as
+-- refit's above.
+local fatten
+if JIT then
+  fatten = function(self, id, minx, miny, maxx, maxy, dx, dy)
+    local s = (maxx - minx) + (maxy - miny)
+    local m = s * MARGIN
+    local x0, y0, x1, y1 = minx - m, miny - m, maxx + m, maxy + m
+    local limit = s * PREDICT_LIMIT
+    -- (no branches: LuaJIT compiles min and max to single instructions, and a branch here,
+    -- in the loop that places every moved body, made side traces it could not compile,
+    -- "register coalescing too complex", hundreds of times a second at N = 5,000)
+    dx, dy = min(max(dx * PREDICT, -limit), limit), min(max(dy * PREDICT, -limit), limit)
+    self.fx0[id], self.fy0[id] = x0 + min(dx, 0), y0 + min(dy, 0)
+    self.fx1[id], self.fy1[id] = x1 + max(dx, 0), y1 + max(dy, 0)
+  end
+else
+  fatten = function(self, id, minx, miny, maxx, maxy, dx, dy)
+    local s = (maxx - minx) + (maxy - miny)
+    local m = s * MARGIN
+    local x0, y0, x1, y1 = minx - m, miny - m, maxx + m, maxy + m
+    local limit = s * PREDICT_LIMIT
+    dx, dy = dx * PREDICT, dy * PREDICT
+    if dx > limit then dx = limit elseif dx < -limit then dx = -limit end
+    if dy > limit then dy = limit elseif dy < -limit then dy = -limit end
+    if dx < 0 then x0 = x0 + dx else x1 = x1 + dx end
+    if dy < 0 then y0 = y0 + dy else y1 = y1 + dy end
+    self.fx0[id], self.fy0[id], self.fx1[id], self.fy1[id] = x0, y0, x1, y1
+  end
 end
 
 --- Add a proxy for the box (closed: a box of zero size is a point or a segment).
