@@ -74,14 +74,18 @@ local poses = 0
 ---@param x number
 ---@param y number
 function Shape:_setPose(x, y)
-  -- (a shape of an incomplete class would fail deep inside the first test that meets it)
-  Shape.checkClass(getmetatable(self), ('strike.%s: its class'):format(tostring(self.name)))
+  -- (a shape of an incomplete class would fail deep inside the first test that meets it;
+  -- the message is made only for a class not yet found complete)
+  local cls = getmetatable(self)
+  if not complete[cls] then Shape.checkClass(cls, ('strike.%s: its class'):format(tostring(self.name))) end
   self.kind = self.kind -- an own copy of the class's kind: the dispatch reads it every test
   -- (an own `_seams`, false unless a compound marks faces: the collider queries read it per
   -- leaf, and a missing field would cost a walk up the class chain; see VertexShape.lua)
   if rawget(self, '_seams') == nil then self._seams = false end
-  for k = 1, layout.SHAPE_HEADER do
-    if self[k] == nil then self[k] = 0 end -- (refreshed before any use: the shape starts dirty)
+  if self[1] == nil then -- (a table not made by _alloc, which fills the header with zeros)
+    for k = 1, layout.SHAPE_HEADER do
+      if self[k] == nil then self[k] = 0 end -- (refreshed before any use: the shape starts dirty)
+    end
   end
   self[X], self[Y] = x + 0.0, y + 0.0 -- (floats: see setPose)
   self[ANGLE], self[COS], self[SIN], self[SCALE] = 0, 1, 0, 1

@@ -71,8 +71,10 @@ local function isCollider(v) return type(v) == 'table' and getmetatable(v) ~= ni
 -- The cache slots and flags, all stale (see the cache protocol above), laid out once, at
 -- construction, so that the object's fields never move.
 local function startCaches(self)
-  for k = 1, CSIZE do
-    if self[k] == nil then self[k] = 0 end
+  if self[1] == nil then -- (a table not made by _alloc, which fills the slots with zeros)
+    for k = 1, CSIZE do
+      if self[k] == nil then self[k] = 0 end
+    end
   end
   self._nleaves, self._massOK, self._clean, self._single = -1, false, false, false
 end
