@@ -426,4 +426,33 @@ describe('nested collider caches, by hand', function()
     end
     assert.equals(1, seen)
   end)
+
+  -- A moved collider shifts the cached sums its centroid comes from (collider.lua: shift);
+  -- an enclosing collider then rebuilds its own from them. Area, length and points each
+  -- decide a centroid in turn, so each is checked with nothing of the ones before it.
+  it('a nested collider of edges only, or of points only, moved, keeps the outer centroid right', function()
+    -- edges: the length-weighted mean of the midpoints
+    local inner = T.Collider(H.Edge(0, 0, 10, 0), H.Edge(0, 10, 0, 30)) -- lengths 10, 20
+    local outer = T.Collider(inner, H.Edge(100, 0, 100, 10)) -- length 10, midpoint (100, 5)
+    outer:getCentroid()
+    inner:translate(3, 4) -- midpoints (8, 4) and (3, 24)
+    local x, y = outer:getCentroid()
+    assert.near((10 * 8 + 20 * 3 + 10 * 100) / 40, x, 1e-12)
+    assert.near((10 * 4 + 20 * 24 + 10 * 5) / 40, y, 1e-12)
+    inner:translateTo(0, 0) -- its centroid to the origin
+    local ix, iy = inner:getCentroid()
+    assert.near(0, ix, 1e-12)
+    assert.near(0, iy, 1e-12)
+    x, y = outer:getCentroid()
+    assert.near((30 * 0 + 10 * 100) / 40, x, 1e-12)
+    assert.near((30 * 0 + 10 * 5) / 40, y, 1e-12)
+    -- points: the mean of the points
+    local pin = T.Collider(H.Point(0, 0), H.Point(4, 0))
+    local pout = T.Collider(pin, H.Point(10, 10))
+    pout:getCentroid()
+    pin:translate(1, 3) -- (1, 3) and (5, 3)
+    x, y = pout:getCentroid()
+    assert.near((1 + 5 + 10) / 3, x, 1e-12)
+    assert.near((3 + 3 + 10) / 3, y, 1e-12)
+  end)
 end)

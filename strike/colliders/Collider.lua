@@ -551,12 +551,22 @@ end
 -- every collider nested in c that holds a leaf (valid too: see the invariant above). The
 -- radius does not change. This saves a collider moved every frame the walk over its leaves
 -- that recomputing them takes; its leaves' own world data still refresh when first used.
+--
+-- Of the sums, only the ones that decide the centroid are shifted: the area's when there is
+-- area, else the length's when there are edges, else the leaves' centroids'. The others are
+-- read by nothing until the next refreshMass recomputes them all: an enclosing collider that
+-- holds c has area (or length) whenever c has, and uses its own first sums then too.
 local function shift(c, dx, dy, mass, bounds)
   if mass then
     c[X], c[Y] = c[X] + dx, c[Y] + dy
-    c[CAX], c[CAY] = c[CAX] + c[CAREA] * dx, c[CAY] + c[CAREA] * dy
-    c[CLX], c[CLY] = c[CLX] + c[CLEN] * dx, c[CLY] + c[CLEN] * dy
-    c[CSX], c[CSY] = c[CSX] + c._nleaves * dx, c[CSY] + c._nleaves * dy
+    local area = c[CAREA]
+    if area > 0 then
+      c[CAX], c[CAY] = c[CAX] + area * dx, c[CAY] + area * dy
+    elseif c[CLEN] > 0 then
+      c[CLX], c[CLY] = c[CLX] + c[CLEN] * dx, c[CLY] + c[CLEN] * dy
+    else
+      c[CSX], c[CSY] = c[CSX] + c._nleaves * dx, c[CSY] + c._nleaves * dy
+    end
     c._massOK = true
   end
   if bounds then
