@@ -200,15 +200,15 @@ local function run(seed, cx, cy, side, rounds)
 end
 
 describe('bench.broadphase.tree', function()
-  it('gives ids from 1 and reuses the lowest free id first', function()
+  it('gives ids from 1 and reuses the last freed id first', function()
     local t = Tree.new()
     for i = 1, 6 do assert.are.equal(i, t:insert(i, 0, i + 1, 1)) end
     t:remove(5)
     t:remove(2)
     t:remove(4)
     assert.are.equal(3, t:count())
-    assert.are.equal(2, t:insert(0, 0, 1, 1))
     assert.are.equal(4, t:insert(0, 0, 1, 1))
+    assert.are.equal(2, t:insert(0, 0, 1, 1))
     assert.are.equal(5, t:insert(0, 0, 1, 1))
     assert.are.equal(7, t:insert(0, 0, 1, 1))
     assert.are.equal(7, t:count())

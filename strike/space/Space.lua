@@ -13,7 +13,7 @@
 --- gets a new rank). Every list is in rank order; pairs by (rank of a, rank of b), a added
 --- before b; rayCastAll by distance, then rank.
 ---
---- Per-body data lives in arrays indexed by proxy id (the tree reuses the lowest free id):
+--- Per-body data lives in arrays indexed by proxy id (the tree reuses the last freed id):
 --- the body, its rank, layer, mask, group, sensor flag and whether it is queued.
 local ROOT = (...):match('^(.-)%.space%.[^%.]+$')
 local Object = require(ROOT .. '.class')

@@ -31,7 +31,7 @@
 ---   short inner loops (LuaJIT compiles them into few traces).
 --- * Results are sorted (ids ascending), so they never depend on insertion history.
 ---
---- Ids: positive integers, stable until removed; a removed id is reused, lowest free first.
+--- Ids: positive integers, stable until removed; a removed id is reused, the last freed first.
 --- Boxes are closed: boxes that touch overlap. Nothing is allocated per call once the
 --- arrays have grown to the world's size (n proxies, their candidates, the largest result).
 local Tree = {}
@@ -79,7 +79,7 @@ function Tree.new()
     fx0 = {}, fy0 = {}, fx1 = {}, fy1 = {}, -- the fat box the leaf has or will have
     pending = {}, -- NONE, MOVED (the leaf's box is stale) or NEW (not in the tree yet)
     idTop = 0, live = 0, frame = 1,
-    freeIds = {}, nFreeIds = 0, -- a binary min-heap of free ids
+    freeIds = {}, nFreeIds = 0, -- the free ids, a stack
     moved = {}, nMoved = 0, -- the move buffer
     stale = {}, nStale = 0, -- the proxies whose leaves await flush (pending ~= NONE)
     ca = {}, cb = {}, nCand = 0, -- kept pairs (fat boxes overlap), a < b, ascending
@@ -126,41 +126,26 @@ local function sortRange(t, n)
   end
 end
 
------------------------------------------------------------------- ids: lowest free first
+------------------------------------------------------------------ ids: the last freed first
 
+-- (a stack: the ids of the bodies removed last are the first given again. Lowest-free-first,
+-- a binary heap, cost a bullet's remove and add on Lua 5.4 about 90 of its 1,060 VM
+-- instructions; a space orders its results by rank, not by id, so the policy shows nowhere.)
 local function takeId(self)
-  local h, n = self.freeIds, self.nFreeIds
+  local n = self.nFreeIds
   if n == 0 then
     local id = self.idTop + 1
     self.idTop = id
     return id
   end
-  local id, v = h[1], h[n]
-  n = n - 1
-  self.nFreeIds = n
-  local i = 1
-  while true do -- sift v down from the root
-    local c = 2 * i
-    if c > n then break end
-    if c < n and h[c + 1] < h[c] then c = c + 1 end
-    if h[c] >= v then break end
-    h[i] = h[c]
-    i = c
-  end
-  if n > 0 then h[i] = v end
-  return id
+  self.nFreeIds = n - 1
+  return self.freeIds[n]
 end
 
 local function giveId(self, id)
-  local h, i = self.freeIds, self.nFreeIds + 1
-  self.nFreeIds = i
-  while i > 1 do -- sift up
-    local p = (i - i % 2) / 2
-    if h[p] <= id then break end
-    h[i] = h[p]
-    i = p
-  end
-  h[i] = id
+  local n = self.nFreeIds + 1
+  self.nFreeIds = n
+  self.freeIds[n] = id
 end
 
 ------------------------------------------------------------------ nodes
@@ -624,7 +609,7 @@ end
 ---@param miny number
 ---@param maxx number
 ---@param maxy number
----@return integer id positive, stable until removed; the lowest free id is reused first
+---@return integer id positive, stable until removed; the last freed id is reused first
 function Tree:insert(minx, miny, maxx, maxy)
   checkBox('insert', minx, miny, maxx, maxy)
   local id = takeId(self)
