@@ -55,6 +55,7 @@ local X, Y = layout.X, layout.Y
 local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
 local CRADIUS, CAREA, CAX, CAY = layout.CRADIUS, layout.CAREA, layout.CAX, layout.CAY
 local CLEN, CLX, CLY, CSX, CSY = layout.CLEN, layout.CLX, layout.CLY, layout.CSX, layout.CSY
+local DIRTY = layout.DIRTY
 local CANGLE, CSIZE = layout.CANGLE, layout.CSIZE
 
 ---@class strike.Collider : strike.Object
@@ -290,15 +291,26 @@ local function refreshMass(self)
 end
 
 -- Level 3: bounds and radius (these need the leaves' world vertices).
+-- (the bounds need no centroid: a body a space adds, or a bullet that only translates, never
+-- computes one until something asks)
 local function refresh(self)
-  if not self._massOK then refreshMass(self) end
+  if self._nleaves < 0 then refreshLeaves(self) end
   local shapes = self.shapes or {}
   local minx, miny, maxx, maxy = huge, huge, -huge, -huge
   for i = 1, #shapes do
     local c = shapes[i]
-    if c.shapes and not c._clean then refresh(c) end
-    local x0, y0, x1, y1 = c:getBounds()
-    if c.shapes and c._nleaves == 0 then x0, y0, x1, y1 = huge, huge, -huge, -huge end
+    local x0, y0, x1, y1
+    if c.shapes then
+      if not c._clean then refresh(c) end
+      if c._nleaves == 0 then
+        x0, y0, x1, y1 = huge, huge, -huge, -huge
+      else
+        x0, y0, x1, y1 = c[MINX], c[MINY], c[MAXX], c[MAXY]
+      end
+    else
+      if c[DIRTY] then c:_refresh() end
+      x0, y0, x1, y1 = c[MINX], c[MINY], c[MAXX], c[MAXY]
+    end
     if x0 < minx then minx = x0 end
     if y0 < miny then miny = y0 end
     if x1 > maxx then maxx = x1 end
@@ -313,6 +325,7 @@ Collider._refresh = refresh
 
 -- The radius about the centroid, of a clean collider (see getRadius).
 local function radius(self)
+  if not self._massOK then refreshMass(self) end
   local cx, cy, leaves, r = self[X], self[Y], self._leaves, 0
   for i = 1, self._nleaves do
     local d = leaves[i]:_farthest(cx, cy)
@@ -327,6 +340,7 @@ end
 function Collider:calcAreaCentroid()
   if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:calcAreaCentroid') end
   self._massOK, self._clean = false, false
+  refreshMass(self)
   refresh(self)
   return self
 end
