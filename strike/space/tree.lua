@@ -312,13 +312,36 @@ end
 
 -- Refit node n; true when its box or height changed. (Its own function: the old box is
 -- dead once it returns, so the trace exits of the rotations that follow carry fewer live
--- values; see bestSwap.)
-local function refitChanged(self, n)
-  local x0, y0, x1, y1, h = self.nx0, self.ny0, self.nx1, self.ny1, self.height
-
-  local ox0, oy0, ox1, oy1, oh = x0[n], y0[n], x1[n], y1[n], h[n]
-  refit(self, n)
-  return x0[n] ~= ox0 or y0[n] ~= oy0 or x1[n] ~= ox1 or y1[n] ~= oy1 or h[n] ~= oh
+-- values; see bestSwap.) Two spellings, as refit: the interpreters' computes the new box in
+-- locals and compares it with the old one before writing, with no call to refit.
+local refitChanged
+if JIT then
+  refitChanged = function(self, n)
+    local x0, y0, x1, y1, h = self.nx0, self.ny0, self.nx1, self.ny1, self.height
+    local ox0, oy0, ox1, oy1, oh = x0[n], y0[n], x1[n], y1[n], h[n]
+    refit(self, n)
+    return x0[n] ~= ox0 or y0[n] ~= oy0 or x1[n] ~= ox1 or y1[n] ~= oy1 or h[n] ~= oh
+  end
+else
+  refitChanged = function(self, n)
+    local x0, y0, x1, y1, h = self.nx0, self.ny0, self.nx1, self.ny1, self.height
+    local a, b = self.child1[n], self.child2[n]
+    local nx0, ny0, nx1, ny1, nh = x0[a], y0[a], x1[a], y1[a], h[a]
+    local v = x0[b]
+    if v < nx0 then nx0 = v end
+    v = y0[b]
+    if v < ny0 then ny0 = v end
+    v = x1[b]
+    if v > nx1 then nx1 = v end
+    v = y1[b]
+    if v > ny1 then ny1 = v end
+    v = h[b]
+    if v > nh then nh = v end
+    nh = nh + 1
+    if nx0 == x0[n] and ny0 == y0[n] and nx1 == x1[n] and ny1 == y1[n] and nh == h[n] then return false end
+    x0[n], y0[n], x1[n], y1[n], h[n] = nx0, ny0, nx1, ny1, nh
+    return true
+  end
 end
 
 -- Refit and rebalance the nodes from n up: AVL-like when one side is much taller, then, on
