@@ -510,6 +510,94 @@ describe('S.pace', function()
     end)
   end)
 
+  -- A filter may query the space it filters for: every query keeps its own candidates, ray
+  -- and rectangle (Space.lua: enter), so the outer one answers as if nothing ran inside it.
+  describe('a filter that queries the same space', function()
+    local sp, bodies
+    before_each(function()
+      sp = S.pace()
+      bodies = {}
+      for i = 1, 12 do
+        local x = (i - 1) * 9
+        local body = i % 3 == 0 and H.Rectangle(x, 0, 10, 8) or (i % 3 == 1 and T.Circle(x, 0, 5)
+          or T.RegularPolygon(x, 0, 6, 5))
+        bodies[i] = sp:add(tagged(body, 'b' .. i))
+      end
+    end)
+
+    -- Every query there is, each from a filter of the others, at the positions of the bodies.
+    local function everyQuery()
+      for i = 1, #bodies, 4 do
+        local x = (i - 1) * 9
+        sp:queryPoint(x, 0)
+        sp:queryRect(x - 3, -3, 6, 6)
+        sp:queryShape(H.Circle(x, 2, 4))
+        sp:check(bodies[i])
+        sp:rayCast(x - 20, 1, 1, 0, 40)
+        sp:rayCastAll(x - 20, -1, 1, 0, 40)
+      end
+    end
+    local function even(body) return tonumber(body.tag:sub(2)) % 2 == 0 end
+    local function nesting(body)
+      everyQuery()
+      return even(body)
+    end
+
+    local function answers(filter)
+      local t = {}
+      t[#t + 1] = tags(sp:queryPoint(27, 0, filter))
+      t[#t + 1] = tags(sp:queryRect(-5, -5, 60, 10, filter))
+      t[#t + 1] = tags(sp:queryShape(H.Rectangle(40, 0, 50, 4), filter))
+      local list, n = sp:check(bodies[5], filter)
+      t[#t + 1] = pairTags(list, n)
+      local hit, d = sp:rayCast(-30, 0.5, 1, 0, 200, filter)
+      t[#t + 1] = hit.tag .. ('@%.12g'):format(d)
+      local hits, k = sp:rayCastAll(-30, -0.5, 1, 0, 200, filter)
+      for j = 1, k do t[#t + 1] = hits[j].body.tag .. ('@%.12g'):format(hits[j].distance) end
+      return table.concat(t, ' | ')
+    end
+
+    it('every query answers as with the same filter that does not nest', function()
+      local plain = answers(even)
+      assert.is_true(#plain > 40) -- (every query found something)
+      assert.equals(plain, answers(nesting))
+      -- and queries nested two deep
+      assert.equals(plain, answers(function(body)
+        sp:queryPoint(0, 0, nesting)
+        sp:rayCast(-30, 0, 1, 0, 200, nesting)
+        return even(body)
+      end))
+    end)
+
+    it('a filter that raised an error leaves the space answering as before', function()
+      local plain = answers(even)
+      for _ = 1, 3 do
+        assert.has_error(function() sp:rayCast(-30, 0.5, 1, 0, 200, function() error('boom') end) end)
+        assert.has_error(function() sp:queryRect(-5, -5, 60, 10, function() error('boom') end) end)
+      end
+      assert.equals(plain, answers(even))
+      assert.equals(plain, answers(nesting))
+    end)
+
+    it('a filter that removes bodies: the query goes on without them, and the space stays whole', function()
+      local removed = {}
+      local _, n = sp:queryRect(-5, -5, 200, 10, function(body)
+        if body == bodies[1] then
+          for i = 2, 12, 2 do
+            sp:remove(bodies[i])
+            removed[bodies[i]] = true
+          end
+        end
+        return true
+      end)
+      assert.equals(6, n) -- the odd ones: body 1, which removed the others, and 3, 5, ..., 11
+      assert.equals(6, sp:count())
+      local list, k = sp:queryRect(-5, -5, 200, 10)
+      assert.equals(6, k)
+      for i = 1, k do assert.is_nil(removed[list[i]]) end
+    end)
+  end)
+
   describe('regressions found by the property spec', function()
     it('a ray aimed at a Point hits it (a box of no size survives the slab test\'s rounding)', function()
       local p = H.Point(-8.4000643149018579, 0.11905944446058037)
@@ -635,6 +723,28 @@ describe('S.pace', function()
       assert(kb < alloc.ONE_TIME_KB, ('a space frame allocated %.3f KB over 1,000 frames'):format(kb))
       assert.is_true(calls > 0)
       assert.is_true(select(2, sp:collisions(out)) > 0)
+    end)
+
+    it('queries run from a filter of another query allocate nothing either', function()
+      local sp = S.pace()
+      for i = 1, 30 do sp:add(H.Circle((i % 6) * 9, math.floor(i / 6) * 9, 5)) end
+      local inner, outer, rOut = {}, {}, {}
+      local seen = 0
+      local function nested(body)
+        sp:queryPoint(9, 9, nil, inner)
+        sp:queryRect(0, 0, 20, 20, nil, inner)
+        sp:rayCast(-10, 9, 1, 0)
+        sp:rayCastAll(-10, 18, 1, 0, 100, nil, rOut)
+        seen = seen + 1
+        return body ~= nil
+      end
+      local function step()
+        sp:queryRect(0, 0, 30, 30, nested, outer)
+        sp:rayCast(-10, 0, 1, 0, 100, nested)
+      end
+      local kb = alloc.kbPer(step, 1000, 200)
+      assert(kb < alloc.ONE_TIME_KB, ('nested queries allocated %.3f KB over 1,000 calls'):format(kb))
+      assert.is_true(seen > 1000)
     end)
   end)
 end)

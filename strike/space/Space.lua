@@ -56,7 +56,10 @@ function Space:new()
   self._body, self._rank, self._layer, self._mask, self._group, self._sensor = {}, {}, {}, {}, {}, {}
   self._queued, self._queue, self._nq = {}, {}, 0
   self._n, self._nextRank = 0, 0
-  self._buf, self._ids, self._ts = {}, {}, {}
+  self._buf = {}
+  -- the queries' scratch, one level per query in progress (a filter may query the space:
+  -- see enter)
+  self._depth, self._levels = 0, {}
   -- contact tracking: records by pair key, the touching records of the last call (in
   -- order) and of this one, and a pool of ended records
   self._active, self._prev, self._cur, self._pool, self._ended = {}, {}, {}, {}, {}
@@ -65,11 +68,32 @@ function Space:new()
   self._on = { begin = {}, stay = {}, ['end'] = {} }
   self._listeners = 0
   self._pairFilter = false
-  self._probe = false -- the rectangle of queryRect, made on first use
-  -- rayCast's ray and best hit so far (see rayVisit)
-  self._ray = { x = 0, y = 0, dx = 0, dy = 0, filter = false, hit = false, rank = 0, d = 0, hx = 0, hy = 0, nx = 0,
-    ny = 0, shape = false }
 end
+
+-- A query begins: its scratch is the level for the depth it runs at, made on first use.
+-- A query started from a filter of another one (or from a callback) runs one level deeper,
+-- so neither sees the other's candidates, ray or rectangle. Each query leaves with leave().
+-- (An error raised by a filter leaves its level taken: later queries then run one level
+-- deeper, with scratch of their own, and stay correct.)
+local function enter(self)
+  local d = self._depth + 1
+  self._depth = d
+  local level = self._levels[d]
+  if not level then
+    level = {
+      ids = {}, ts = {}, stack = {}, tstack = {}, -- candidates, their entry distances, the tree walk's
+      probe = false, -- the rectangle of queryRect, made on first use
+      -- rayCast's ray and best hit so far (see rayVisit)
+      x = 0, y = 0, dx = 0, dy = 0, filter = false, hit = false, rank = 0, d = 0, hx = 0, hy = 0, nx = 0, ny = 0,
+      shape = false,
+      space = self, -- (the ray's visitor gets the level alone)
+    }
+    self._levels[d] = level
+  end
+  return level
+end
+
+local function leave(self) self._depth = self._depth - 1 end
 
 local function isSpace(v) return type(v) == 'table' and v._tree ~= nil and getmetatable(v) ~= nil end
 
@@ -544,9 +568,9 @@ end
 
 ------------------------------------------------------------------ queries
 
--- The candidates for the box, in rank order, into self._ids; returns the count.
-local function candidates(self, x0, y0, x1, y1)
-  local ids = self._ids
+-- The candidates for the box, in rank order, into level.ids; returns the count.
+local function candidates(self, level, x0, y0, x1, y1)
+  local ids = level.ids
   local k = self._tree:query(x0, y0, x1, y1, ids)
   byRank(self, ids, k)
   return k
@@ -617,12 +641,14 @@ function Space:check(body, filterArg, out)
   if not (inside and self._sensor[self_id]) then
     local x0, y0, x1, y1
     if inside then x0, y0, x1, y1 = self._tree:box(self_id) else x0, y0, x1, y1 = body:getBounds() end
-    local ids, bodies, layer, sensor, rank = self._ids, self._body, self._layer, self._sensor, self._rank
-    local n = candidates(self, x0, y0, x1, y1)
+    local level = enter(self)
+    local ids, bodies, layer, sensor, rank = level.ids, self._body, self._layer, self._sensor, self._rank
+    local n = candidates(self, level, x0, y0, x1, y1)
     for c = 1, n do
       local id = ids[c]
       local other = bodies[id]
-      if id ~= self_id and not sensor[id] and queryFilter(filterArg, other, layer[id]) then
+      -- (other is false when a filter removed it since)
+      if other and id ~= self_id and not sensor[id] and queryFilter(filterArg, other, layer[id]) then
         local ok = true
         if inside then
           if rank[self_id] < rank[id] then ok = allowed(self, self_id, id) else ok = allowed(self, id, self_id) end
@@ -636,6 +662,7 @@ function Space:check(body, filterArg, out)
         end
       end
     end
+    leave(self)
   end
   trimRecords(out, k, '_m')
   return out, k
@@ -664,34 +691,38 @@ function Space:queryPoint(x, y, filterArg, out)
   checkOut('strike.Space:queryPoint', out, 4)
   out = out or {}
   flush(self)
-  local ids, bodies, layer = self._ids, self._body, self._layer
-  local n, k = candidates(self, x, y, x, y), 0
+  local level = enter(self)
+  local ids, bodies, layer = level.ids, self._body, self._layer
+  local n, k = candidates(self, level, x, y, x, y), 0
   for c = 1, n do
     local id = ids[c]
     local b = bodies[id]
-    if queryFilter(filterArg, b, layer[id]) and b:containsPoint(x, y) then
+    if b and queryFilter(filterArg, b, layer[id]) and b:containsPoint(x, y) then
       k = k + 1
       out[k] = b
     end
   end
+  leave(self)
   trim(out, k)
   return out, k
 end
 
 -- The bodies colliding with `probe` (a shape or collider; skipped itself), as queryShape.
-local function overlapping(self, probe, filterArg, out)
+-- `level` is the query's scratch (enter), which this leaves.
+local function overlapping(self, level, probe, filterArg, out)
   flush(self)
   local x0, y0, x1, y1 = probe:getBounds()
-  local ids, bodies, layer, scratch = self._ids, self._body, self._layer, self._scratch
-  local n, k = candidates(self, x0, y0, x1, y1), 0
+  local ids, bodies, layer, scratch = level.ids, self._body, self._layer, self._scratch
+  local n, k = candidates(self, level, x0, y0, x1, y1), 0
   for c = 1, n do
     local id = ids[c]
     local b = bodies[id]
-    if b ~= probe and queryFilter(filterArg, b, layer[id]) and collide(probe, b, scratch) then
+    if b and b ~= probe and queryFilter(filterArg, b, layer[id]) and collide(probe, b, scratch) then
       k = k + 1
       out[k] = b
     end
   end
+  leave(self)
   trim(out, k)
   return out, k
 end
@@ -728,10 +759,11 @@ function Space:queryRect(x, y, w, h, filterArg, out)
   checkQuery(filterArg, fname, 5)
   checkOut(fname, out, 6)
   out = out or {}
-  local probe = self._probe
+  local level = enter(self)
+  local probe = level.probe
   if not probe then
     probe = Rectangle(0, 0, 1, 1)
-    self._probe = probe
+    level.probe = probe
   end
   -- (the probe's local geometry set in place: corners at (+-w/2, +-h/2), as the
   -- constructor lays them out, normals unchanged; then its centre)
@@ -741,7 +773,7 @@ function Space:queryRect(x, y, w, h, filterArg, out)
   probe.dx, probe.dy, probe[AREA], probe[RADIUS] = w, h, w * h, sqrt(hw * hw + hh * hh)
   probe[X], probe[Y] = x + hw, y + hh
   probe:_touch()
-  return overlapping(self, probe, filterArg, out)
+  return overlapping(self, level, probe, filterArg, out)
 end
 
 --- The bodies colliding with a shape or collider (as S.triking; it need not be in the
@@ -756,7 +788,7 @@ function Space:queryShape(shape, filterArg, out)
   checkBody('strike.Space:queryShape', shape, 1)
   checkQuery(filterArg, 'strike.Space:queryShape', 2)
   checkOut('strike.Space:queryShape', out, 3)
-  return overlapping(self, shape, filterArg, out or {})
+  return overlapping(self, enter(self), shape, filterArg, out or {})
 end
 
 ------------------------------------------------------------------ rays
@@ -791,17 +823,17 @@ local function rayBody(b, x, y, dx, dy, maxDistance)
 end
 
 -- rayCast's visitor (strike/space/tree.lua, rayVisit): test body `id`, entered at t, and
--- keep its hit in self._ray when it is nearer than the best so far, or as near and added
--- earlier; return the distance to beat.
-local function rayVisit(self, id, _, best)
-  local state = self._ray
+-- keep its hit in the query's level (enter) when it is nearer than the best so far, or as
+-- near and added earlier; return the distance to beat.
+local function rayVisit(level, id, _, best)
+  local self = level.space
   local b = self._body[id]
-  if queryFilter(state.filter, b, self._layer[id]) then
-    local d, px, py, nx, ny, shape = rayBody(b, state.x, state.y, state.dx, state.dy, best)
+  if b and queryFilter(level.filter, b, self._layer[id]) then
+    local d, px, py, nx, ny, shape = rayBody(b, level.x, level.y, level.dx, level.dy, best)
     local rank = self._rank[id]
-    if d and (d < best or not state.hit or rank < state.rank) then
-      state.hit, state.rank, state.d, state.shape = b, rank, d, shape
-      state.hx, state.hy, state.nx, state.ny = px, py, nx, ny
+    if d and (d < best or not level.hit or rank < level.rank) then
+      level.hit, level.rank, level.d, level.shape = b, rank, d, shape
+      level.hx, level.hy, level.nx, level.ny = px, py, nx, ny
       return d
     end
   end
@@ -829,13 +861,14 @@ function Space:rayCast(x, y, dx, dy, maxDistance, filterArg)
   if not isSpace(self) then badSelf(self, 'strike.Space:rayCast') end
   local ux, uy, maxT = checkRay('strike.Space:rayCast', x, y, dx, dy, maxDistance)
   checkQuery(filterArg, 'strike.Space:rayCast', 6)
-  local state = self._ray
-  state.x, state.y, state.dx, state.dy, state.filter, state.hit = x, y, dx, dy, filterArg, false
-  self._tree:rayVisit(x, y, ux, uy, maxT, rayVisit, self)
-  local hit = state.hit
+  local level = enter(self)
+  level.x, level.y, level.dx, level.dy, level.filter, level.hit = x, y, dx, dy, filterArg, false
+  self._tree:rayVisit(x, y, ux, uy, maxT, rayVisit, level, level.stack, level.tstack)
+  leave(self)
+  local hit = level.hit
+  level.hit, level.filter = false, false -- (the level keeps nothing alive)
   if not hit then return nil end
-  state.hit, state.filter = false, false -- (the state keeps nothing alive)
-  return hit, state.d, state.hx, state.hy, state.nx, state.ny, state.shape
+  return hit, level.d, level.hx, level.hy, level.nx, level.ny, level.shape
 end
 
 local function byDistance(r1, r2)
@@ -863,13 +896,14 @@ function Space:rayCastAll(x, y, dx, dy, maxDistance, filterArg, out)
   checkOut('strike.Space:rayCastAll', out, 7)
   out = out or {}
   flush(self)
-  local ids, ts = self._ids, self._ts
+  local level = enter(self)
+  local ids, ts = level.ids, level.ts
   local n = self._tree:rayCandidates(x, y, ux, uy, maxT, ids, ts)
   local bodies, layer, rank, k = self._body, self._layer, self._rank, 0
   for i = 1, n do
     local id = ids[i]
     local b = bodies[id]
-    if queryFilter(filterArg, b, layer[id]) then
+    if b and queryFilter(filterArg, b, layer[id]) then
       local d, px, py, nx, ny, shape = rayBody(b, x, y, dx, dy, maxT)
       if d then
         k = k + 1
@@ -879,6 +913,7 @@ function Space:rayCastAll(x, y, dx, dy, maxDistance, filterArg, out)
       end
     end
   end
+  leave(self)
   trimRecords(out, k, '_rank')
   local sorted = true
   for j = 2, k do

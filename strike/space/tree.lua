@@ -932,7 +932,10 @@ end
 ---@param maxT number
 ---@param visit fun(ctx: any, id: integer, t: number, maxT: number): number
 ---@param ctx any
-function Tree:rayVisit(x, y, dx, dy, maxT, visit, ctx)
+---@param stack table|nil the walk's scratch, nodes (default: the tree's); a visitor that walks the
+---tree again (a filter querying the space) must be given its own
+---@param tstack table|nil the walk's scratch, entry distances (the same)
+function Tree:rayVisit(x, y, dx, dy, maxT, visit, ctx, stack, tstack)
   flush(self)
   local root = self.root
   if root == 0 then return end
@@ -942,7 +945,8 @@ function Tree:rayVisit(x, y, dx, dy, maxT, visit, ctx)
   local ix, iy, zx, zy, e = rayWalk(self, x, y, dx, dy)
   local t = entry(x0[root], y0[root], x1[root], y1[root], e, x, y, zx, zy, ix, iy, maxT)
   if t < 0 then return end
-  local stack, ts, top = self.stack, self.tstack, 1
+  local ts, top = tstack or self.tstack, 1
+  stack = stack or self.stack
   stack[1], ts[1] = root, t
   while top > 0 do
     local n, tn = stack[top], ts[top]
