@@ -64,6 +64,8 @@
 ---   9-10    CAX, CAY          the sums of area * centroid         (`_massOK`)
 ---   11-13   CLEN, CLX, CLY    edges: the sum of lengths, and of length * midpoint
 ---   14-15   CSX, CSY          the sum of the leaves' centroids (the mean of points)
+---                             (of the sums in 9-15, a translation keeps current only those the
+---                             centroid comes from: Collider.lua, shift)
 ---   16      CANGLE            the angle (the sum of its rotations)
 local layout = {}
 
