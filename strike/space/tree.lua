@@ -185,17 +185,26 @@ if JIT then
     h[n] = 1 + max(h[a], h[b])
   end
 else
+  -- (the new box and height in locals, compared with the old before they are written: true
+  -- when they changed, which fixUp asks; see refitChanged)
   refit = function(self, n)
-    local c1, c2 = self.child1, self.child2
     local x0, y0, x1, y1, h = self.nx0, self.ny0, self.nx1, self.ny1, self.height
-    local a, b = c1[n], c2[n]
-    local ax0, ay0, ax1, ay1, ha = x0[a], y0[a], x1[a], y1[a], h[a]
-    local bx0, by0, bx1, by1, hb = x0[b], y0[b], x1[b], y1[b], h[b]
-    x0[n] = ax0 < bx0 and ax0 or bx0
-    y0[n] = ay0 < by0 and ay0 or by0
-    x1[n] = ax1 > bx1 and ax1 or bx1
-    y1[n] = ay1 > by1 and ay1 or by1
-    h[n] = 1 + (ha > hb and ha or hb)
+    local a, b = self.child1[n], self.child2[n]
+    local nx0, ny0, nx1, ny1, nh = x0[a], y0[a], x1[a], y1[a], h[a]
+    local v = x0[b]
+    if v < nx0 then nx0 = v end
+    v = y0[b]
+    if v < ny0 then ny0 = v end
+    v = x1[b]
+    if v > nx1 then nx1 = v end
+    v = y1[b]
+    if v > ny1 then ny1 = v end
+    v = h[b]
+    if v > nh then nh = v end
+    nh = nh + 1
+    if nx0 == x0[n] and ny0 == y0[n] and nx1 == x1[n] and ny1 == y1[n] and nh == h[n] then return false end
+    x0[n], y0[n], x1[n], y1[n], h[n] = nx0, ny0, nx1, ny1, nh
+    return true
   end
 end
 
@@ -312,35 +321,14 @@ end
 
 -- Refit node n; true when its box or height changed. (Its own function: the old box is
 -- dead once it returns, so the trace exits of the rotations that follow carry fewer live
--- values; see bestSwap.) Two spellings, as refit: the interpreters' computes the new box in
--- locals and compares it with the old one before writing, with no call to refit.
-local refitChanged
+-- values; see bestSwap.) The interpreters' refit already answers that.
+local refitChanged = refit
 if JIT then
   refitChanged = function(self, n)
     local x0, y0, x1, y1, h = self.nx0, self.ny0, self.nx1, self.ny1, self.height
     local ox0, oy0, ox1, oy1, oh = x0[n], y0[n], x1[n], y1[n], h[n]
     refit(self, n)
     return x0[n] ~= ox0 or y0[n] ~= oy0 or x1[n] ~= ox1 or y1[n] ~= oy1 or h[n] ~= oh
-  end
-else
-  refitChanged = function(self, n)
-    local x0, y0, x1, y1, h = self.nx0, self.ny0, self.nx1, self.ny1, self.height
-    local a, b = self.child1[n], self.child2[n]
-    local nx0, ny0, nx1, ny1, nh = x0[a], y0[a], x1[a], y1[a], h[a]
-    local v = x0[b]
-    if v < nx0 then nx0 = v end
-    v = y0[b]
-    if v < ny0 then ny0 = v end
-    v = x1[b]
-    if v > nx1 then nx1 = v end
-    v = y1[b]
-    if v > ny1 then ny1 = v end
-    v = h[b]
-    if v > nh then nh = v end
-    nh = nh + 1
-    if nx0 == x0[n] and ny0 == y0[n] and nx1 == x1[n] and ny1 == y1[n] and nh == h[n] then return false end
-    x0[n], y0[n], x1[n], y1[n], h[n] = nx0, ny0, nx1, ny1, nh
-    return true
   end
 end
 
