@@ -299,22 +299,19 @@ local function refresh(self)
   local minx, miny, maxx, maxy = huge, huge, -huge, -huge
   for i = 1, #shapes do
     local c = shapes[i]
-    local x0, y0, x1, y1
-    if c.shapes then
+    local nested = c.shapes
+    if nested then
       if not c._clean then refresh(c) end
-      if c._nleaves == 0 then
-        x0, y0, x1, y1 = huge, huge, -huge, -huge
-      else
-        x0, y0, x1, y1 = c[MINX], c[MINY], c[MAXX], c[MAXY]
-      end
-    else
-      if c[DIRTY] then c:_refresh() end
-      x0, y0, x1, y1 = c[MINX], c[MINY], c[MAXX], c[MAXY]
+    elseif c[DIRTY] then
+      c:_refresh()
     end
-    if x0 < minx then minx = x0 end
-    if y0 < miny then miny = y0 end
-    if x1 > maxx then maxx = x1 end
-    if y1 > maxy then maxy = y1 end
+    if not nested or c._nleaves > 0 then -- (an empty nested collider bounds nothing)
+      local x0, y0, x1, y1 = c[MINX], c[MINY], c[MAXX], c[MAXY]
+      if x0 < minx then minx = x0 end
+      if y0 < miny then miny = y0 end
+      if x1 > maxx then maxx = x1 end
+      if y1 > maxy then maxy = y1 end
+    end
   end
   if self._nleaves == 0 then minx, miny, maxx, maxy = 0, 0, 0, 0 end
   self[CRADIUS] = -1 -- (computed by the first getRadius: a space needs the bounds alone)
