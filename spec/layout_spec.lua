@@ -65,48 +65,48 @@ local function cases()
   return list
 end
 
+-- Call fn(name, shape, where) with every case, built and used bare and in a collider.
+local function eachUsedShape(fn)
+  for _, c in ipairs(cases()) do
+    for _, inCollider in ipairs({ false, true }) do
+      local s = c[2]()
+      exercise(s, inCollider and T.Collider(s) or s)
+      fn(c[1], s, inCollider and 'in a collider' or 'bare')
+    end
+  end
+end
+
 describe('the shape data contract (layout.lua)', function()
   it('every header slot is set, and the array part ends at the shape\'s last slot', function()
-    for _, c in ipairs(cases()) do
-      for _, inCollider in ipairs({ false, true }) do
-        local s = c[2]()
-        local body = inCollider and T.Collider(s) or s
-        exercise(s, body)
-        local count = s[layout.COUNT]
-        local size = count and layout.size(count) or layout.SHAPE_HEADER
-        for k = 1, size do
-          assert.is_not_nil(s[k], ('%s: slot %d of %d'):format(c[1], k, size))
-        end
-        assert.is_nil(s[size + 1], c[1] .. ': a slot past the last')
-        assert.equals(size, #s, c[1])
-        assert.is_boolean(s[layout.DIRTY], c[1])
-        if c[1] == 'Circle' or c[1] == 'Point' then
-          assert.is_nil(count, c[1] .. ' has no vertex count')
-        else
-          assert.is_number(count, c[1])
-        end
+    eachUsedShape(function(name, s)
+      local count = s[layout.COUNT]
+      local size = count and layout.size(count) or layout.SHAPE_HEADER
+      for k = 1, size do
+        assert.is_not_nil(s[k], ('%s: slot %d of %d'):format(name, k, size))
       end
-    end
+      assert.is_nil(s[size + 1], name .. ': a slot past the last')
+      assert.equals(size, #s, name)
+      assert.is_boolean(s[layout.DIRTY], name)
+      if name == 'Circle' or name == 'Point' then
+        assert.is_nil(count, name .. ' has no vertex count')
+      else
+        assert.is_number(count, name)
+      end
+    end)
   end)
 
   it('a shape has no named fields beyond the documented few (8 at most: LuaJIT\'s 8-node hash)', function()
-    for _, c in ipairs(cases()) do
-      for _, inCollider in ipairs({ false, true }) do
-        local s = c[2]()
-        local body = inCollider and T.Collider(s) or s
-        exercise(s, body)
-        local keys = namedKeys(s)
-        local own = OWN[c[1]] or {}
-        for _, k in ipairs(keys) do
-          assert.is_true(COMMON[k] or own[k] or false,
-            ('%s (%s) has the named field %s: strike\'s scalars belong in layout.lua\'s slots'):format(
-              c[1], inCollider and 'in a collider' or 'bare', k))
-        end
-        -- (8 fit LuaJIT's 8-node hash; an Ellipse, with its three numbers, in a space has 9)
-        local most = c[1] == 'Ellipse' and 9 or 8
-        assert.is_true(#keys <= most, ('%s has %d named fields: %s'):format(c[1], #keys, table.concat(keys, ' ')))
+    eachUsedShape(function(name, s, where)
+      local keys = namedKeys(s)
+      local own = OWN[name] or {}
+      for _, k in ipairs(keys) do
+        assert.is_true(COMMON[k] or own[k] or false,
+          ('%s (%s) has the named field %s: strike\'s scalars belong in layout.lua\'s slots'):format(name, where, k))
       end
-    end
+      -- (8 fit LuaJIT's 8-node hash; an Ellipse, with its three numbers, in a space has 9)
+      local most = name == 'Ellipse' and 9 or 8
+      assert.is_true(#keys <= most, ('%s has %d named fields: %s'):format(name, #keys, table.concat(keys, ' ')))
+    end)
   end)
 
   it('a chain segment keeps its neighbours\' data in slots too, after its vertex records', function()
