@@ -278,6 +278,36 @@ function S.aabb(a, b)
   return ax0 < bx1 and bx0 < ax1 and ay0 < by1 and by0 < ay1
 end
 
+local sweep = require(ROOT .. '.motion.sweep')
+local separation = require(ROOT .. '.motion.separation')
+
+--- Sweep body a by (dx, dy), turning by `angle` (radians, default 0) about its centroid, against
+--- body b, which stays (strike/motion/sweep.lua; README, "Sweeps"): false when they never
+--- touch, else the hit `{t =, x =, y =, nx =, ny =, overlapping =}` (filled into `out` when
+--- given): t in [0, 1] the fraction of the move at the first touch, (x, y) where they touch,
+--- (nx, ny) the unit normal from b toward a; bodies that already overlap give t = 0 and
+--- overlapping = true.
+---@param a strike.Collider|strike.Shape
+---@param dx number
+---@param dy number
+---@param b strike.Collider|strike.Shape
+---@param angle number|nil
+---@param out table|nil
+---@return table|false
+function S.weep(a, dx, dy, b, angle, out) return sweep.weep(a, dx, dy, b, angle, out) end
+
+--- The distance between two bodies and the closest points on each (strike/motion/
+--- separation.lua; README, "Distance"): `d, ax, ay, bx, by`; for overlapping bodies d is minus
+--- the depth, and the points are those of each that reach deepest into the other.
+---@param a strike.Collider|strike.Shape
+---@param b strike.Collider|strike.Shape
+---@return number d
+---@return number ax
+---@return number ay
+---@return number bx
+---@return number by
+function S.eparation(a, b) return separation.eparation(a, b) end
+
 local Space = require(ROOT .. '.space.Space')
 Space._ite = S.ite
 

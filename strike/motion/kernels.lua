@@ -1,0 +1,483 @@
+--- Motion kernels on two leaf shapes (refreshed, read through the data contract of
+--- base/layout.lua): the distance between them, and the time of impact when one of them
+--- translates. S.weep and S.eparation (motion/sweep.lua, motion/separation.lua) run them over
+--- every pair of two bodies' leaves. They allocate nothing.
+---
+--- Every built-in leaf is a *core* and a radius: a convex polygon, a segment, or one point
+--- (a circle's or point's centre: its X, Y slots, read as a one-vertex core), grown by the
+--- radius in slot R (a circle's radius, a rounded shape's, else 0). Two leaves touch when the
+--- distance between their cores reaches the sum of their radii.
+---
+--- Time of impact: A moves by t (dx, dy), t in [0, 1], B stays. The answer is the first t at
+--- which they would begin to overlap: a pair that only touches at the start, or grazes a
+--- corner, and never overlaps is no hit; a pair touching at the start and moving into each
+--- other is a hit at t = 0.
+---  * Sharp pairs (both radii 0): the ray t (dx, dy) against the Minkowski difference
+---    M = B - A, which A's translation reaches exactly when they overlap. M is the
+---    intersection of the half-planes n . s <= h(n) = max over B of n . b - min over A of n . a
+---    over the faces of both cores (B's normals, A's negated: the axes of the SAT, sat.lua),
+---    plus each segment core's two directions and, for two points, the two coordinate axes
+---    (M is then a segment or a point, which the faces alone do not bound). The ray is
+---    clipped against them as a ray against a polygon (M. Cyrus and J. Beck, "Generalized
+---    two- and three-dimensional clipping", Computers & Graphics 3(1), 1978, as
+---    collide/ray.lua does): the interval [lo, hi] of t inside M. A hit needs lo < hi (an
+---    interior to enter), hi > 0 and lo <= 1; t = max(lo, 0). The face that gave lo is the
+---    hit's normal, from B toward A. An h within TIE of 0 (round-off of a touching start)
+---    counts as 0, so that a pair touching at the start and moving apart, or along the
+---    touching face, is no hit.
+---  * Rounded pairs: the first contact of two convex sets at a distance R > 0 is between a
+---    vertex of one core and an edge (or the vertex) of the other, so the answer is the
+---    earliest of the rays from every core vertex of A (along (dx, dy)) against the capsule
+---    of radius R about every edge of B, and from every vertex of B (along -(dx, dy))
+---    against the capsules about A's edges; each capsule as its two discs and the two sides
+---    of its rectangle (C. Ericson, Real-Time Collision Detection, 2005, 5.3.2 for the discs,
+---    in the numerically stable form of collide/ray.lua). The normal is from the core point
+---    of B to the core point of A, at distance R.
+---
+--- Corners. When two faces of M that are not parallel give the same lo (within TIE), the
+--- sharp hit met a corner of M: any normal between the two is right. The kernel then picks
+--- the one the move grazes most (the smallest |n . d|: the move slides past the corner), and
+--- flags the hit a corner, so that a caller choosing among hits at the same time can prefer
+--- a face (a box landing exactly on the seam between two tiles meets a corner of the second
+--- tile and the face of the first: the face wins; see sweep.lua).
+---
+--- Chain segments (base/ChainSegment.lua) are one-sided as in collide/chain.lua: a leaf
+--- whose centroid starts behind the segment's line never meets it, and a hit counts only
+--- when its normal (from the segment toward the other leaf) is one the segment may push
+--- along (chain.admissible: its own normal, or within a convex corner's cone); at a corner
+--- of a sharp pair, an end's direction is replaced by the neighbour's normal at a convex
+--- corner and left to the neighbour at a flat or concave one. Ghost vertices then make a
+--- chain as smooth to a sweep as to the narrow phase. Two chain segments never meet.
+local ROOT = (...):match('^(.-)%.motion%.[^%.]+$')
+local layout = require(ROOT .. '.base.layout')
+local admissible = require(ROOT .. '.collide.chain').admissible
+
+local COUNT, X, Y, R = layout.COUNT, layout.X, layout.Y, layout.R
+local STRIDE, FIRST, VY, NX, NY, D = layout.STRIDE, layout.FIRST, layout.VY, layout.NX, layout.NY, layout.D
+local HASPREV, HASNEXT, CONVEX1, CONVEX2 = layout.HASPREV, layout.HASNEXT, layout.CONVEX1, layout.CONVEX2
+local G1X, G1Y, G2X, G2Y = layout.G1X, layout.G1Y, layout.G2X, layout.G2Y
+local P1 = layout.base(1)
+local sqrt, abs, huge = math.sqrt, math.abs, math.huge
+
+-- A one-vertex core is read at its X, Y slots as if they were a vertex record.
+assert(X + VY == Y, 'motion/kernels.lua: a centre must read as a vertex record')
+
+local kernels = {}
+
+--- Relative tolerance of touching and ties: TIE times the pair's scale (see scale).
+kernels.TIE = 1e-11
+
+-- The slots of a core's first and last vertex record, and its vertex count.
+local function span(s)
+  local n = s[COUNT]
+  if n then return FIRST, FIRST + STRIDE * (n - 1), n end
+  return X, X, 1
+end
+--- span(s): the slots of a core's first and last vertex record, and its vertex count.
+---@param s table
+---@return integer k0
+---@return integer k1
+---@return integer n
+kernels.span = span
+
+local function minProj(s, k0, k1, ux, uy)
+  local m = huge
+  for k = k0, k1, STRIDE do
+    local p = ux * s[k] + uy * s[k + VY]
+    if p < m then m = p end
+  end
+  return m
+end
+
+local function maxProj(s, k0, k1, ux, uy)
+  local m = -huge
+  for k = k0, k1, STRIDE do
+    local p = ux * s[k] + uy * s[k + VY]
+    if p > m then m = p end
+  end
+  return m
+end
+
+--- The size that tolerances are relative to: the largest coordinate magnitude of the two
+--- leaves' bounds, and the move.
+---@param A table
+---@param B table
+---@param dx number
+---@param dy number
+---@return number
+function kernels.scale(A, B, dx, dy)
+  local m = abs(dx) + abs(dy)
+  for i = 1, 4 do
+    local a, b = abs(A[i]), abs(B[i])
+    if a > m then m = a end
+    if b > m then m = b end
+  end
+  return m
+end
+
+------------------------------------------------------------------ the axes of a pair
+
+-- State of the axis scan: `mode` 1 clips the ray (toi), 2 finds the smallest h (overlap).
+local mode, mdx, mdy, tieH, tieT = 1, 0, 0, 0, 0
+local lo, hi, dead = -huge, huge, false
+local bux, buy, bclass, btag, bdn, bcorner = 0, 0, 0, 0, 0, false
+local minH = huge
+
+-- One axis (ux, uy) with its h: class 1 a face of B (tag: its record's slot), 2 a face of
+-- A, 3 a direction of a segment (tag 1: B's p1 end, 2: B's p2 end, 0: A's) or a coordinate
+-- axis.
+local function step(ux, uy, h, class, tag)
+  if mode == 2 then
+    if h < minH then minH = h end
+    return
+  end
+  if h <= tieH and h >= -tieH then h = 0 end
+  local dn = mdx * ux + mdy * uy
+  if dn < 0 then
+    local te = h / dn
+    if te > lo + tieT then
+      lo, bux, buy, bclass, btag, bdn, bcorner = te, ux, uy, class, tag, dn, false
+    elseif te >= lo - tieT then -- a tie: the same face seen from both shapes, or a corner
+      if ux * buy - uy * bux > 1e-9 or ux * buy - uy * bux < -1e-9 or ux * bux + uy * buy < 0 then
+        bcorner = true
+      end
+      local better
+      if class == 3 or bclass == 3 then better = bclass == 3 and class ~= 3 else better = -dn < -bdn end
+      if better then bux, buy, bclass, btag, bdn = ux, uy, class, tag, dn end
+      if te > lo then lo = te end
+    end
+  elseif dn > 0 then
+    local tx = h / dn
+    if tx < hi then hi = tx end
+  elseif h <= 0 then
+    dead = true -- parallel, on or outside the plane: never strictly inside
+  end
+end
+
+-- The directions of a segment core (slots k0, k1), as axes for the pair: `onB` when the
+-- segment is B's.
+local function segmentAxes(seg, k0, k1, other, o0, o1, onB)
+  local ex, ey = seg[k1] - seg[k0], seg[k1 + VY] - seg[k0 + VY]
+  local l = sqrt(ex * ex + ey * ey)
+  if not (l > 0) then return false end -- luacheck: ignore 581 (NaN reads as no hit)
+  ex, ey = ex / l, ey / l
+  if onB then
+    step(ex, ey, maxProj(seg, k0, k1, ex, ey) - minProj(other, o0, o1, ex, ey), 3, 2)
+    step(-ex, -ey, maxProj(seg, k0, k1, -ex, -ey) - minProj(other, o0, o1, -ex, -ey), 3, 1)
+  else
+    step(ex, ey, maxProj(other, o0, o1, ex, ey) - minProj(seg, k0, k1, ex, ey), 3, 0)
+    step(-ex, -ey, maxProj(other, o0, o1, -ex, -ey) - minProj(seg, k0, k1, -ex, -ey), 3, 0)
+  end
+  return true
+end
+
+-- Every axis of the pair (see the header), through step.
+local function scan(A, B)
+  local a0, a1, na = span(A)
+  local b0, b1, nb = span(B)
+  if nb >= 2 then
+    for k = b0, b1, STRIDE do
+      local ux, uy = B[k + NX], B[k + NY]
+      step(ux, uy, B[k + D] - minProj(A, a0, a1, ux, uy), 1, k)
+    end
+  end
+  if na >= 2 then
+    for k = a0, a1, STRIDE do
+      local mx, my = A[k + NX], A[k + NY]
+      step(-mx, -my, A[k + D] - minProj(B, b0, b1, mx, my), 2, k)
+    end
+  end
+  local pointA = na == 1 or (na == 2 and not segmentAxes(A, a0, a1, B, b0, b1, false))
+  local pointB = nb == 1 or (nb == 2 and not segmentAxes(B, b0, b1, A, a0, a1, true))
+  if pointA and pointB then
+    step(1, 0, maxProj(B, b0, b1, 1, 0) - minProj(A, a0, a1, 1, 0), 3, 0)
+    step(-1, 0, maxProj(B, b0, b1, -1, 0) - minProj(A, a0, a1, -1, 0), 3, 0)
+    step(0, 1, maxProj(B, b0, b1, 0, 1) - minProj(A, a0, a1, 0, 1), 3, 0)
+    step(0, -1, maxProj(B, b0, b1, 0, -1) - minProj(A, a0, a1, 0, -1), 3, 0)
+  end
+end
+
+--- The largest penetration of the two cores over the axes of the pair: > 0 when the cores
+--- overlap (their SAT depth), <= 0 when an axis separates them (by at least its minus).
+---@param A table
+---@param B table
+---@return number
+function kernels.coreOverlap(A, B)
+  mode, minH = 2, huge
+  scan(A, B)
+  return minH
+end
+
+--- The point of a leaf farthest along the unit vector (ux, uy): its core's support, grown by
+--- its radius.
+---@param s table
+---@param ux number
+---@param uy number
+---@return number x
+---@return number y
+function kernels.support(s, ux, uy)
+  local k0, k1 = span(s)
+  local best, bx, by = -huge, 0, 0
+  for k = k0, k1, STRIDE do
+    local p = ux * s[k] + uy * s[k + VY]
+    if p > best then best, bx, by = p, s[k], s[k + VY] end
+  end
+  local r = s[R]
+  return bx + ux * r, by + uy * r
+end
+
+------------------------------------------------------------------ distance
+
+-- The closest point to (px, py) on the segment (ax, ay)-(bx, by), and the squared distance.
+local function closest(px, py, ax, ay, bx, by)
+  local ex, ey = bx - ax, by - ay
+  local l2 = ex * ex + ey * ey
+  local u = 0
+  if l2 > 0 then
+    u = ((px - ax) * ex + (py - ay) * ey) / l2
+    if u < 0 then u = 0 elseif u > 1 then u = 1 end
+  end
+  local qx, qy = ax + u * ex, ay + u * ey
+  local dx, dy = px - qx, py - qy
+  return qx, qy, dx * dx + dy * dy
+end
+
+-- The edges of a core: its records' slots k0 .. k1 give edges (k, next k), wrapping for
+-- three or more vertices; a segment has one edge, a point one degenerate edge.
+local function lastEdge(k0, k1, n)
+  if n >= 3 then return k1 end
+  return k0
+end
+
+-- Best pair so far of nearest: squared distance, the point on A, the point on B.
+local nd2, nax, nay, nbx, nby = huge, 0, 0, 0, 0
+
+local function nearestOneWay(P, p0, p1, Q, q0, q1, nq, flip)
+  local qlast = lastEdge(q0, q1, nq)
+  for k = p0, p1, STRIDE do
+    local px, py = P[k], P[k + VY]
+    for j = q0, qlast, STRIDE do
+      local j2 = j + STRIDE
+      if j2 > q1 then j2 = q0 end
+      if nq == 1 then j2 = j end
+      local qx, qy, d2 = closest(px, py, Q[j], Q[j + VY], Q[j2], Q[j2 + VY])
+      if d2 < nd2 then
+        if flip then nd2, nax, nay, nbx, nby = d2, qx, qy, px, py else nd2, nax, nay, nbx, nby = d2, px, py, qx, qy end
+      end
+    end
+  end
+end
+
+--- The distance between the cores of two leaves and their closest points (on A's core, then
+--- on B's): exact for disjoint cores; 0 (with the first closest pair found) when they meet.
+---@param A table
+---@param B table
+---@return number d
+---@return number ax
+---@return number ay
+---@return number bx
+---@return number by
+function kernels.coreDistance(A, B)
+  local a0, a1, na = span(A)
+  local b0, b1, nb = span(B)
+  nd2 = huge
+  nearestOneWay(A, a0, a1, B, b0, b1, nb, false)
+  nearestOneWay(B, b0, b1, A, a0, a1, na, true)
+  if nd2 > 0 and kernels.coreOverlap(A, B) >= 0 then return 0, nax, nay, nbx, nby end
+  return sqrt(nd2), nax, nay, nbx, nby
+end
+local coreDistance = kernels.coreDistance
+
+------------------------------------------------------------------ time of impact
+
+-- Where a hit is written: kernels.t, .nx, .ny (unit, from B toward A), .x, .y (the contact
+-- point at t), .corner (see the header).
+kernels.t, kernels.nx, kernels.ny, kernels.x, kernels.y, kernels.corner = 0, 0, 0, 0, 0, false
+
+-- The contact point of a sharp hit along (ux, uy) at t: the middle of the overlap of the
+-- two shapes' extreme features on the touching line.
+local function sharpPoint(A, B, t, dx, dy, ux, uy)
+  local a0, a1 = span(A)
+  local b0, b1 = span(B)
+  local ox, oy = t * dx, t * dy
+  local line = maxProj(B, b0, b1, ux, uy)
+  local mina = minProj(A, a0, a1, ux, uy) + ux * ox + uy * oy
+  local tx, ty = -uy, ux
+  local alo, ahi, blo, bhi = huge, -huge, huge, -huge
+  for k = a0, a1, STRIDE do
+    local x, y = A[k] + ox, A[k + VY] + oy
+    if ux * x + uy * y <= mina + tieH then
+      local p = tx * x + ty * y
+      if p < alo then alo = p end
+      if p > ahi then ahi = p end
+    end
+  end
+  for k = b0, b1, STRIDE do
+    local x, y = B[k], B[k + VY]
+    if ux * x + uy * y >= line - tieH then
+      local p = tx * x + ty * y
+      if p < blo then blo = p end
+      if p > bhi then bhi = p end
+    end
+  end
+  local mid = ((alo > blo and alo or blo) + (ahi < bhi and ahi or bhi)) / 2
+  return ux * line + tx * mid, uy * line + ty * mid
+end
+
+-- Sharp pair: false, or true with the hit in `kernels` (B may be a chain segment; A not).
+local function sharpToi(A, B, dx, dy, tol)
+  mode, mdx, mdy, tieH = 1, dx, dy, tol
+  local dl = sqrt(dx * dx + dy * dy)
+  tieT = dl > 0 and tol / dl or 0
+  lo, hi, dead, bclass, bcorner = -huge, huge, false, 0, false
+  scan(A, B)
+  -- luacheck: ignore 581 (NaN reads as no hit)
+  if dead or bclass == 0 or not (lo < hi) or not (hi > 0) or not (lo <= 1) then return false end
+  local ux, uy = bux, buy
+  if B.kind == 'chain' then -- a chain segment: its own normal, or a convex corner's cone
+    if bclass == 1 then
+      if btag ~= P1 then return false end -- its back face
+    elseif bclass == 3 then
+      if btag == 1 then
+        if not B[CONVEX1] then return false end
+        if B[HASPREV] then ux, uy = B[G1X], B[G1Y] end
+      elseif btag == 2 then
+        if not B[CONVEX2] then return false end
+        if B[HASNEXT] then ux, uy = B[G2X], B[G2Y] end
+      end
+    elseif not admissible(B, ux, uy) then
+      return false
+    end
+  end
+  local t = lo > 0 and lo or 0
+  kernels.t, kernels.nx, kernels.ny, kernels.corner = t, ux, uy, bcorner
+  kernels.x, kernels.y = sharpPoint(A, B, t, dx, dy, bux, buy)
+  return true
+end
+
+-- The entry time of the point p moving by (dx, dy) into the disc of radius r about c, from
+-- outside; huge when it misses or only grazes.
+local function discEntry(px, py, dx, dy, cx, cy, r)
+  local mx, my = px - cx, py - cy
+  local b = mx * dx + my * dy
+  if b >= 0 then return huge end
+  local a = dx * dx + dy * dy
+  local cr = mx * dy - my * dx
+  local disc = a * r * r - cr * cr
+  if not (disc > 0) then return huge end -- luacheck: ignore 581 (NaN reads as no hit)
+  return (mx * mx + my * my - r * r) / (-b + sqrt(disc))
+end
+
+-- The entry time of p moving by (dx, dy) into the capsule of radius r about the segment
+-- (ax, ay)-(bx, by), from outside; huge when it misses.
+local function capsuleEntry(px, py, dx, dy, ax, ay, bx, by, r)
+  local best = discEntry(px, py, dx, dy, ax, ay, r)
+  local ex, ey = bx - ax, by - ay
+  local l2 = ex * ex + ey * ey
+  if l2 > 0 then
+    local t2 = discEntry(px, py, dx, dy, bx, by, r)
+    if t2 < best then best = t2 end
+    local l = sqrt(l2)
+    local nx, ny = -ey / l, ex / l
+    local s, dn = nx * (px - ax) + ny * (py - ay), nx * dx + ny * dy
+    if s < 0 then s, dn = -s, -dn end
+    if s > r and dn < 0 then
+      local t = (r - s) / dn
+      if t < best then
+        local u = (ex * (px + t * dx - ax) + ey * (py + t * dy - ay)) / l2
+        if u >= 0 and u <= 1 then best = t end
+      end
+    end
+  end
+  return best
+end
+
+-- Rounded pair's best hit so far.
+local rt, rnx, rny, rx, ry = huge, 0, 0, 0, 0
+
+-- Rays from P's core vertices (moving by (dx, dy)) against the capsules about Q's edges.
+-- `flip`: P is B (moving by -d), Q is A.
+local function roundOneWay(P, Q, dx, dy, r, rB, flip, chainSeg)
+  local p0, p1 = span(P)
+  local q0, q1, nq = span(Q)
+  local qlast = lastEdge(q0, q1, nq)
+  for k = p0, p1, STRIDE do
+    local px, py = P[k], P[k + VY]
+    for j = q0, qlast, STRIDE do
+      local j2 = j + STRIDE
+      if j2 > q1 then j2 = q0 end
+      if nq == 1 then j2 = j end
+      local ax, ay, bx, by = Q[j], Q[j + VY], Q[j2], Q[j2 + VY]
+      local t = capsuleEntry(px, py, dx, dy, ax, ay, bx, by, r)
+      if t < rt and t <= 1 then
+        local hx, hy = px + t * dx, py + t * dy
+        local qx, qy = closest(hx, hy, ax, ay, bx, by)
+        local nx, ny = hx - qx, hy - qy
+        local l = sqrt(nx * nx + ny * ny)
+        if l > 0 then
+          nx, ny = nx / l, ny / l
+          if flip then nx, ny = -nx, -ny end -- (from B toward A)
+          if not chainSeg or admissible(chainSeg, nx, ny) then
+            rt, rnx, rny = t, nx, ny
+            if flip then rx, ry = px + nx * rB, py + ny * rB else rx, ry = qx + nx * rB, qy + ny * rB end
+          end
+        end
+      end
+    end
+  end
+end
+
+-- Rounded pair (A[R] + B[R] > 0): false, or true with the hit in `kernels`.
+local function roundToi(A, B, dx, dy, tol)
+  local r, rB = A[R] + B[R], B[R]
+  local chainSeg = B.kind == 'chain' and B or false
+  local d, ax, ay, bx, by = coreDistance(A, B)
+  if d < r - tol then return false end -- (overlapping: the caller's S.triking decides)
+  if d <= r + tol then -- touching at the start: a hit when the move goes in
+    if not (d > 0) then return false end -- luacheck: ignore 581 (NaN reads as no hit)
+    local nx, ny = (ax - bx) / d, (ay - by) / d
+    -- luacheck: ignore 581 (NaN reads as no hit)
+    if not (dx * nx + dy * ny < 0) or (chainSeg and not admissible(chainSeg, nx, ny)) then return false end
+    kernels.t, kernels.nx, kernels.ny, kernels.corner = 0, nx, ny, false
+    kernels.x, kernels.y = bx + nx * rB, by + ny * rB
+    return true
+  end
+  rt = huge
+  roundOneWay(A, B, dx, dy, r, rB, false, chainSeg)
+  roundOneWay(B, A, -dx, -dy, r, rB, true, chainSeg)
+  if rt == huge then return false end
+  kernels.t, kernels.nx, kernels.ny, kernels.corner = rt, rnx, rny, false
+  kernels.x, kernels.y = rx, ry
+  return true
+end
+
+--- The time of impact of leaf A moving by (dx, dy) against leaf B (see the header): false,
+--- or true with the hit in kernels.t, .x, .y, .nx, .ny, .corner. `tol` is the touching
+--- tolerance (TIE times scale).
+---@param A table
+---@param B table
+---@param dx number
+---@param dy number
+---@param tol number
+---@return boolean
+function kernels.toi(A, B, dx, dy, tol)
+  local flip = A.kind == 'chain'
+  if flip then
+    if B.kind == 'chain' then return false end -- chain segments never meet
+    A, B, dx, dy = B, A, -dx, -dy
+  end
+  if B.kind == 'chain' then -- one-sided: the other leaf's centroid must start in front
+    local nx, ny = B[P1 + NX], B[P1 + NY]
+    if nx * (A[X] - B[P1]) + ny * (A[Y] - B[P1 + VY]) < 0 then return false end
+  end
+  local hit
+  if A[R] + B[R] > 0 then hit = roundToi(A, B, dx, dy, tol) else hit = sharpToi(A, B, dx, dy, tol) end
+  if hit and flip then
+    local t = kernels.t
+    kernels.nx, kernels.ny = -kernels.nx, -kernels.ny
+    kernels.x, kernels.y = kernels.x - t * dx, kernels.y - t * dy
+  end
+  return hit
+end
+
+return kernels
