@@ -197,6 +197,9 @@ local METHODS = {
     queryShape = { 'space', 'strike.Space:queryShape' },
     rayCast = { 'space', 'strike.Space:rayCast' },
     rayCastAll = { 'space', 'strike.Space:rayCastAll' },
+    cast = { 'space', 'strike.Space:cast' },
+    move = { 'space', 'strike.Space:move' },
+    addResponse = { 'space', 'strike.Space:addResponse' },
   } },
 }
 

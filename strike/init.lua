@@ -309,6 +309,7 @@ function S.weep(a, dx, dy, b, angle, out) return sweep.weep(a, dx, dy, b, angle,
 function S.eparation(a, b) return separation.eparation(a, b) end
 
 local Space = require(ROOT .. '.space.Space')
+require(ROOT .. '.space.motion') -- (Space:cast, Space:move, Space:addResponse)
 Space._ite = S.ite
 
 --- A new, empty space: a world of colliders and shapes with a broadphase, exact queries,

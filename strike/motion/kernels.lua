@@ -66,6 +66,11 @@ local kernels = {}
 
 --- Relative tolerance of touching and ties: TIE times the pair's scale (see scale).
 kernels.TIE = 1e-11
+--- A pair touching at the start is a hit when the move goes into it: when d . n < -APPROACH
+--- |d|, n the normal at the start (a sine: moves closer to the touching face than that
+--- slide along it).
+kernels.APPROACH = 1e-9
+local APPROACH = kernels.APPROACH
 
 -- The slots of a core's first and last vertex record, and its vertex count.
 local function span(s)
@@ -128,7 +133,7 @@ local minH = huge
 -- axis.
 local function step(ux, uy, h, class, tag)
   if mode == 2 then
-    if h < minH then minH = h end
+    if h < minH then minH, bux, buy = h, ux, uy end
     return
   end
   if h <= tieH and h >= -tieH then h = 0 end
@@ -198,14 +203,17 @@ local function scan(A, B)
 end
 
 --- The largest penetration of the two cores over the axes of the pair: > 0 when the cores
---- overlap (their SAT depth), <= 0 when an axis separates them (by at least its minus).
+--- overlap (their SAT depth), <= 0 when an axis separates them (by at least its minus); and
+--- that axis, a unit normal from B toward A.
 ---@param A table
 ---@param B table
----@return number
+---@return number h
+---@return number ux
+---@return number uy
 function kernels.coreOverlap(A, B)
-  mode, minH = 2, huge
+  mode, minH, bux, buy = 2, huge, 0, 0
   scan(A, B)
-  return minH
+  return minH, bux, buy
 end
 
 --- The point of a leaf farthest along the unit vector (ux, uy): its core's support, grown by
@@ -436,8 +444,13 @@ local function roundToi(A, B, dx, dy, tol)
   if d <= r + tol then -- touching at the start: a hit when the move goes in
     if not (d > 0) then return false end -- luacheck: ignore 581 (NaN reads as no hit)
     local nx, ny = (ax - bx) / d, (ay - by) / d
+    -- (going in by more than round-off: a normal found from closest points is only that
+    -- exact, and a move along the touching face must not stop)
     -- luacheck: ignore 581 (NaN reads as no hit)
-    if not (dx * nx + dy * ny < 0) or (chainSeg and not admissible(chainSeg, nx, ny)) then return false end
+    if not (dx * nx + dy * ny < -APPROACH * sqrt(dx * dx + dy * dy))
+      or (chainSeg and not admissible(chainSeg, nx, ny)) then
+      return false
+    end
     kernels.t, kernels.nx, kernels.ny, kernels.corner = 0, nx, ny, false
     kernels.x, kernels.y = bx + nx * rB, by + ny * rB
     return true

@@ -71,7 +71,7 @@ function separation.eparation(a, b)
       end
     end
   end
-  if best < 0 then -- (touching as far as S.triking is concerned: see the header)
+  if best <= 0 then -- (touching as far as S.triking is concerned: see the header)
     local mx, my = (bax + bbx) / 2, (bay + bby) / 2
     return 0, mx, my, mx, my
   end

@@ -38,7 +38,7 @@ local G1X, G1Y, G2X, G2Y = layout.G1X, layout.G1Y, layout.G2X, layout.G2Y
 local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
 local toi, span, coreDistance, scale, TIE = kernels.toi, kernels.span, kernels.coreDistance, kernels.scale,
   kernels.TIE
-local support = kernels.support
+local support, coreOverlap, APPROACH = kernels.support, kernels.coreOverlap, kernels.APPROACH
 local collide, leafList, root = compound.collide, Collider._leafList, Shape._rootOf
 local finite, fail, describe = check.finite, check.fail, check.describe
 local sqrt, abs, cos, sin, huge, type = math.sqrt, math.abs, math.cos, math.sin, math.huge, type
@@ -212,7 +212,12 @@ local function gap(na, lb, nb)
         if d < best then
           local nx, ny = ax - bx, ay - by
           local l = sqrt(nx * nx + ny * ny)
-          if l > 0 then nx, ny = nx / l, ny / l else nx, ny = 0, 0 end
+          if l > 0 then
+            nx, ny = nx / l, ny / l
+          else -- (the cores meet: the axis that separates them least)
+            local _
+            _, nx, ny = coreOverlap(A, B)
+          end
           -- (the surface points, along the line of the core points)
           ax, ay, bx, by = ax - nx * A[R], ay - ny * A[R], bx + nx * B[R], by + ny * B[R]
           best, bax, bay, bbx, bby, bnx, bny = d, ax, ay, bx, by, nx, ny
@@ -224,7 +229,7 @@ local function gap(na, lb, nb)
 end
 
 -- The hit of a rotating sweep at t: the middle of the closest points, and the normal (when
--- the cores meet exactly, against the move instead).
+-- there is none, against the move instead).
 local function rotHit(out, t, ax, ay, bx, by, nx, ny, dx, dy)
   if nx == 0 and ny == 0 then
     local l = sqrt(dx * dx + dy * dy)
@@ -262,7 +267,8 @@ local function rotate(la, na, lb, nb, cx, cy, dx, dy, angle, out)
     if d <= target then
       if t == 0 then -- touching at the start: a hit only when a's touching point goes in
         local vx, vy = dx - angle * (ay - cy), dy + angle * (ax - cx)
-        if not (vx * nx + vy * ny < 0) then return false end -- luacheck: ignore 581 (NaN reads as no hit)
+        -- luacheck: ignore 581 (NaN reads as no hit)
+        if not (vx * nx + vy * ny < -APPROACH * sqrt(vx * vx + vy * vy)) then return false end
       end
       return rotHit(out, t, ax, ay, bx, by, nx, ny, dx, dy)
     end

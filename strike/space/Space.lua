@@ -926,6 +926,16 @@ function Space:rayCastAll(x, y, dx, dy, maxDistance, filterArg, out)
   return out, k
 end
 
+------------------------------------------------------------------ motion
+
+--- The internals that Space:cast, Space:move and Space:addResponse share (strike/space/
+--- motion.lua, which strike/init.lua loads after this file): the query levels, flush, the
+--- candidates of a box, the pair rules and the argument checks.
+Space._internals = {
+  enter = enter, leave = leave, flush = flush, candidates = candidates, allowed = allowed, isSpace = isSpace,
+  checkBody = checkBody, idOf = idOf,
+}
+
 ------------------------------------------------------------------ drawing support
 
 --- Visit the broadphase's boxes: fn(ctx, minx, miny, maxx, maxy, depth, isLeaf) for every

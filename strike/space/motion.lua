@@ -1,0 +1,504 @@
+--- Motion in a space: Space:cast (the first body a move would hit) and Space:move (move and
+--- resolve what it meets, bump-style), with responses (Space:addResponse). Loaded by
+--- strike/init.lua after Space.lua, whose internals it shares (Space._internals: its query
+--- levels, flush, the candidates of a box and the pair rules).
+---
+--- Sweeps, not teleports: every leg of a move is a time-of-impact query against the bodies
+--- whose boxes meet the leg's swept box (motion/sweep.lua), so nothing tunnels at any speed.
+---
+--- move, step by step. From the body's centroid toward the goal:
+---  1. the first hit of the leg among the bodies that the layers, masks, groups, the pair
+---     filter and `filter(body, other)` allow (a response name; nil: ignore that body), each
+---     other body at most once per move; sensors are skipped (their events come from
+---     collisions()). A body overlapping at the start counts only when the move goes
+---     further into it;
+---  2. the body stops just short of the touch: a gap of SKIN (relative to its size) along
+---     the normal, taken back along the leg, so that the next leg starts apart from what it
+---     touched (a leg that slides along a surface then never meets the seams of the tiles
+---     that make it);
+---  3. the response (Space:addResponse) gives where the next leg starts and its goal.
+--- The collision records (`other`, `type`, `t`, `nx`, `ny`, `touchX`, `touchY`, `x`, `y`,
+--- `overlapping`) and the list are the space's, reused by the next move.
+local ROOT = (...):match('^(.-)%.space%.[^%.]+$')
+local sweep = require(ROOT .. '.motion.sweep')
+local compound = require(ROOT .. '.collide.compound')
+local check = require(ROOT .. '.check')
+local MTV = require(ROOT .. '.collide.MTV')
+local filter = require(ROOT .. '.space.filter')
+
+local collide, translate, leavesOf, better = compound.collide, sweep.translate, sweep.leavesOf, sweep.better
+local overlapHit = sweep.overlapHit
+local queryFilter, checkQuery = filter.query, filter.checkQuery
+local fail, describe, what, badSelf, finite = check.fail, check.describe, check.what, check.badSelf, check.finite
+local sqrt, abs, huge, type = math.sqrt, math.abs, math.huge, type
+
+local Space = require(ROOT .. '.space.Space')
+local private = Space._internals
+
+local enter, leave, flush, candidates = private.enter, private.leave, private.flush, private.candidates
+local allowed, isSpace, checkBody, idOf = private.allowed, private.isSpace, private.checkBody, private.idOf
+
+--- The gap a move leaves between a body and what stops it: SKIN times the body's radius,
+--- plus a rounding of its position (README, "Moving bodies").
+Space.SKIN = 1e-6
+
+local mtv = MTV()
+local one1, one2 = {}, {}
+local hitScratch = {}
+
+-- The first body the body `b` (id `self_id` when in this space, else false) hits moving by
+-- (dx, dy), among the candidates of `level`: the hit in `out` (plus out.body) or false.
+-- `pick(other, id)` says whether other may be hit: a truthy value (kept in out.pick), or
+-- false. `away`: a body overlapping at the start counts only when the move goes further in.
+local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out)
+  local x0, y0, x1, y1 = b:getBounds()
+  if dx < 0 then x0 = x0 + dx else x1 = x1 + dx end
+  if dy < 0 then y0 = y0 + dy else y1 = y1 + dy end
+  local n = candidates(self, level, x0, y0, x1, y1)
+  local ids, bodies, sensor = level.ids, self._body, self._sensor
+  local la, na = leavesOf(b, one1)
+  local found, bt, bcorner, badn = false, huge, false, huge
+  local dl = sqrt(dx * dx + dy * dy)
+  for c = 1, n do
+    local id = ids[c]
+    local other = bodies[id]
+    if other and id ~= self_id and not sensor[id] then
+      local p = pick(ctx, other, id)
+      if p then
+        local m = collide(b, other, mtv)
+        local t, x, y, nx, ny, corner, overlapping
+        if m then
+          if not away or dx * m.nx + dy * m.ny > 0 then
+            overlapHit(m, hitScratch)
+            t, x, y, nx, ny, corner, overlapping = 0, hitScratch.x, hitScratch.y, hitScratch.nx, hitScratch.ny,
+              false, true
+          end
+        elseif na > 0 then
+          local lb, nb = leavesOf(other, one2)
+          if nb > 0 and translate(la, na, lb, nb, dx, dy) then
+            t, x, y, nx, ny, corner, overlapping = sweep.t, sweep.x, sweep.y, sweep.nx, sweep.ny, sweep.corner,
+              false
+          end
+        end
+        if t then
+          local adn = abs(dx * nx + dy * ny)
+          -- (ties within round-off of the positions: see sweep.better)
+          local tieT = dl > 0 and 1e-9 * (abs(x) + abs(y) + dl) / dl * 1e-3 or 0
+          if not found or better(t, corner, adn, bt, bcorner, badn, tieT) then
+            found, bt, bcorner, badn = true, t, corner, adn
+            out.t, out.x, out.y, out.nx, out.ny, out.overlapping = t, x, y, nx, ny, overlapping
+            out.body, out.pick = other, p
+          end
+        end
+      end
+    end
+  end
+  return found
+end
+
+------------------------------------------------------------------ cast
+
+-- cast's rule for a candidate: the query filter, and the pair rules for a body in the space.
+local function castPick(level, other, id)
+  local self = level.space
+  if not queryFilter(level.filter, other, self._layer[id]) then return false end
+  local sid = level.sid
+  if sid then
+    local rank = self._rank
+    if rank[sid] < rank[id] then return allowed(self, sid, id) end
+    return allowed(self, id, sid)
+  end
+  return true
+end
+
+local function number(fname, v, i, name)
+  if not finite(v) then
+    fail(('%s: argument %d (%s) must be a finite number, got %s'):format(fname, i, name, describe(v)))
+  end
+end
+
+--- The first body that `body` (in this space or not) would hit moving by (dx, dy): the hit
+--- of S.weep (`t`, `x`, `y`, `nx`, `ny`, `overlapping`) plus `body`, the body hit, filled
+--- into `out` when given; or false. Only bodies `filter` allows count (a function
+--- (other) -> boolean or a layer filter); for a body in the space, layers, masks, groups
+--- and the pair filter apply too. Sensors are never hit, and a sensor hits nothing. Ties go
+--- to a face over a corner, then to the body the move grazes most, then to the body added
+--- first.
+---@param body strike.Collider|strike.Shape
+---@param dx number
+---@param dy number
+---@param filterArg function|table|nil
+---@param out table|nil
+---@return table|false
+function Space:cast(body, dx, dy, filterArg, out)
+  local F = 'strike.Space:cast'
+  if not isSpace(self) then badSelf(self, F) end
+  checkBody(F, body, 1)
+  number(F, dx, 2, 'dx')
+  number(F, dy, 3, 'dy')
+  checkQuery(filterArg, F, 4)
+  if out ~= nil and (type(out) ~= 'table' or getmetatable(out) ~= nil) then
+    fail(('%s: argument 5 (out) must be a plain table for the hit (a previous hit, or {}), got %s'):format(F,
+      what(out)))
+  end
+  out = out or {}
+  flush(self)
+  local inside = rawget(body, '_space') == self
+  local sid = inside and body._sid
+  if sid and self._sensor[sid] then return false end
+  local level = enter(self)
+  level.filter, level.sid = filterArg, sid
+  local found = first(self, level, body, sid, dx, dy, castPick, level, false, out)
+  leave(self)
+  level.filter, level.sid = false, false
+  if not found then
+    out.body, out.pick = nil, nil
+    return false
+  end
+  out.pick = nil
+  return out
+end
+
+------------------------------------------------------------------ move
+
+local function slide(_, col, _, _, goalX, goalY)
+  local tx, ty = col.touchX, col.touchY
+  local rx, ry = goalX - tx, goalY - ty
+  local nx, ny = col.nx, col.ny
+  local rn = rx * nx + ry * ny
+  if rn < 0 then rx, ry = rx - rn * nx, ry - rn * ny end
+  return tx, ty, tx + rx, ty + ry
+end
+
+local function touch(_, col)
+  return col.touchX, col.touchY, col.touchX, col.touchY
+end
+
+local function cross(_, _, x, y, goalX, goalY)
+  return x, y, goalX, goalY
+end
+
+local function bounce(_, col, _, _, goalX, goalY)
+  local tx, ty = col.touchX, col.touchY
+  local rx, ry = goalX - tx, goalY - ty
+  local nx, ny = col.nx, col.ny
+  local rn = rx * nx + ry * ny
+  if rn < 0 then rx, ry = rx - 2 * rn * nx, ry - 2 * rn * ny end
+  return tx, ty, tx + rx, ty + ry
+end
+
+-- The responses every space has; a space's own ones (addResponse) are in self._responses.
+local RESPONSES = { slide = slide, touch = touch, cross = cross, bounce = bounce }
+
+--- Add a response for move's filters to name: `fn(space, col, x, y, goalX, goalY)` is called
+--- when the body meets col.other, with (x, y) where the leg started and its goal, and
+--- returns where the next leg starts and its goal (`fromX, fromY, goalX, goalY`; the body
+--- stays where it is when they are equal). The built-in ones ('slide', 'touch', 'cross',
+--- 'bounce') cannot be replaced.
+---@param name string
+---@param fn function
+function Space:addResponse(name, fn)
+  local F = 'strike.Space:addResponse'
+  if not isSpace(self) then badSelf(self, F) end
+  if type(name) ~= 'string' then
+    fail(('%s: argument 1 (name) must be a string, got %s'):format(F, describe(name)))
+  end
+  if RESPONSES[name] then fail(('%s: %q is a built-in response and cannot be replaced'):format(F, name)) end
+  if type(fn) ~= 'function' then
+    fail(('%s: argument 2 must be a function (space, col, x, y, goalX, goalY), got %s'):format(F, what(fn)))
+  end
+  local own = rawget(self, '_responses')
+  if not own then
+    own = {}
+    self._responses = own
+  end
+  own[name] = fn
+end
+
+-- move's rule for a candidate: not met yet in this move, the pair rules, and the filter's
+-- response (default 'slide').
+local function movePick(level, other, id)
+  if level.visited[other] then return false end
+  local self = level.space
+  local sid, rank = level.sid, self._rank
+  if rank[sid] < rank[id] then
+    if not allowed(self, sid, id) then return false end
+  elseif not allowed(self, id, sid) then
+    return false
+  end
+  local f = level.filter
+  if not f then return 'slide' end
+  local name = f(level.body, other)
+  if name == nil or name == false then return false end
+  return name
+end
+
+local function newCol()
+  return { other = false, type = 'slide', t = 0, nx = 0, ny = 0, touchX = 0, touchY = 0, x = 0, y = 0,
+    overlapping = false }
+end
+
+-- The options of move: the up direction, the cosine of the steepest walkable slope (false:
+-- none), the snap and step heights (0: none).
+local upX, upY, walkCos, snapH, stepH = 0, -1, false, 0, 0
+local OPTS = { up = true, slope = true, snap = true, step = true }
+
+local function readOptions(F, opts)
+  upX, upY, walkCos, snapH, stepH = 0, -1, false, 0, 0
+  if opts == nil then return end
+  if type(opts) ~= 'table' or getmetatable(opts) ~= nil then
+    fail(('%s: argument 5 (options) must be a table such as {slope = math.rad(50), snap = 4, step = 8}, got %s')
+      :format(F, what(opts)))
+  end
+  for key in pairs(opts) do
+    if not OPTS[key] then fail(('%s: unknown option %s (options are up, slope, snap and step)'):format(F,
+      describe(key))) end
+  end
+  local up = opts.up
+  if up ~= nil then
+    if type(up) ~= 'table' or not (finite(up[1]) and finite(up[2])) or up[1] == 0 and up[2] == 0 then
+      fail(('%s: up must be a direction {x, y} (not {0, 0}), got %s'):format(F, what(up)))
+    end
+    local l = sqrt(up[1] * up[1] + up[2] * up[2])
+    upX, upY = up[1] / l, up[2] / l
+  end
+  local slope = opts.slope
+  if slope ~= nil then
+    if not finite(slope) or slope < 0 or slope >= math.pi / 2 then
+      fail(('%s: slope must be an angle in radians from 0 to less than pi / 2, got %s'):format(F, describe(slope)))
+    end
+    walkCos = math.cos(slope)
+  end
+  for _, key in ipairs({ 'snap', 'step' }) do
+    local v = opts[key]
+    if v ~= nil and not (finite(v) and v >= 0) then
+      fail(('%s: %s must be a length >= 0, got %s'):format(F, key, describe(v)))
+    end
+  end
+  snapH, stepH = opts.snap or 0, opts.step or 0
+end
+
+-- Can the body stand on a surface of normal (nx, ny)? (Any surface facing up when no slope
+-- is given.)
+local function walkable(nx, ny)
+  local c = nx * upX + ny * upY
+  if walkCos then return c >= walkCos end
+  return c > 0.7
+end
+
+-- The slide on walkable ground: the remaining motion keeps its part across `up` and
+-- follows the surface; its downward part is dropped (no sliding down a slope). A motion
+-- going up (a jump) slides as usual.
+local function groundSlide(col, goalX, goalY)
+  local tx, ty = col.touchX, col.touchY
+  local rx, ry = goalX - tx, goalY - ty
+  local ru = rx * upX + ry * upY
+  local nx, ny = col.nx, col.ny
+  if ru > 0 then return slide(nil, col, 0, 0, goalX, goalY) end
+  local hx, hy = rx - ru * upX, ry - ru * upY
+  local l = -(hx * nx + hy * ny) / (upX * nx + upY * ny)
+  return tx, ty, tx + hx + l * upX, ty + hy + l * upY
+end
+
+-- move's rule for the extra casts of a step and a snap: every body the body would not
+-- pass through (a response other than 'cross'), met before in this move or not.
+local function solidPick(level, other, id)
+  local self = level.space
+  local sid, rank = level.sid, self._rank
+  if rank[sid] < rank[id] then
+    if not allowed(self, sid, id) then return false end
+  elseif not allowed(self, id, sid) then
+    return false
+  end
+  local f = level.filter
+  if not f then return 'slide' end
+  local name = f(level.body, other)
+  if name == nil or name == false or name == 'cross' then return false end
+  return name
+end
+
+local probe = {}
+
+-- Cast the body by (dx, dy) against solid bodies and move it as far as it goes, SKIN short:
+-- the fraction moved, and the hit (in `probe`) or false.
+local function advance(self, level, body, sid, dx, dy, skin)
+  flush(self)
+  local h = first(self, level, body, sid, dx, dy, solidPick, level, true, probe)
+  local ts = 1
+  if h then
+    local dn = -(dx * probe.nx + dy * probe.ny)
+    ts = probe.t
+    if probe.overlapping then ts = 0 elseif dn > 0 then ts = ts - skin / dn end
+    if ts < 0 then ts = 0 end
+    probe.body, probe.pick = nil, nil
+  end
+  if ts > 0 then body:translate(ts * dx, ts * dy) end
+  return ts, h
+end
+
+-- Try to step up a ledge at most stepH high while moving across `up` by (hx, hy): up, across,
+-- then down onto walkable ground. Returns true with the body there, or false with the body
+-- back where it was.
+local function stepUp(self, level, body, sid, hx, hy, skin)
+  local x0, y0 = body:getCentroid()
+  local tu = advance(self, level, body, sid, upX * stepH, upY * stepH, skin)
+  if tu > 0 then
+    local th = advance(self, level, body, sid, hx, hy, skin)
+    if th > 0 then
+      local up = tu * stepH
+      local td, h = advance(self, level, body, sid, -upX * up, -upY * up, skin)
+      if h and td < 1 and walkable(probe.nx, probe.ny) then return true end
+    end
+  end
+  local x, y = body:getCentroid()
+  body:translate(x0 - x, y0 - y)
+  return false
+end
+
+--- Move a body of this space so that its centroid goes toward (goalX, goalY), resolving what
+--- it meets on the way (see the header): returns the centroid it reached, the list of
+--- collisions in the order they happened and their count. `filter(body, other)` returns a
+--- response name for each other body ('slide', the default without a filter; 'touch',
+--- 'cross', 'bounce', or one added with addResponse), or nil to pass through it unreported.
+--- Each collision is `{other =, type =, t =, nx =, ny =, touchX =, touchY =, x =, y =,
+--- overlapping =}`: t the fraction of its leg at the touch, (nx, ny) the unit normal from
+--- other toward body, (touchX, touchY) the centroid where the body touched, (x, y) the
+--- contact point. The list and its records are reused by the next move.
+--- Options for characters (README, "Characters"): `up` (a direction {x, y}; default {0, -1},
+--- up on a LÖVE screen), `slope` (the steepest walkable slope, radians: on walkable ground a
+--- slide keeps the motion across `up` and never slides down), `snap` (a move that does not
+--- go up ends on walkable ground within this distance below, when there is some: no hops
+--- down a slope or a stair), `step` (a slide into a wall first tries to climb a ledge up to
+--- this high).
+---@param body strike.Collider|strike.Shape
+---@param goalX number
+---@param goalY number
+---@param filterFn function|nil
+---@param opts table|nil
+---@return number actualX
+---@return number actualY
+---@return table collisions
+---@return integer count
+function Space:move(body, goalX, goalY, filterFn, opts)
+  local F = 'strike.Space:move'
+  if not isSpace(self) then badSelf(self, F) end
+  local sid = idOf(self, F, body)
+  number(F, goalX, 2, 'goalX')
+  number(F, goalY, 3, 'goalY')
+  if filterFn ~= nil and type(filterFn) ~= 'function' then
+    fail(('%s: argument 4 (filter) must be a function (body, other) -> response name or nil, got %s'):format(F,
+      what(filterFn)))
+  end
+  readOptions(F, opts)
+  local cols = rawget(self, '_cols')
+  if not cols then
+    cols = { visited = {}, hit = {} }
+    self._cols = cols
+  end
+  local visited, hit = cols.visited, cols.hit
+  -- (a move that a filter or response interrupted with an error left its marks: clear them)
+  for i = 1, #cols do
+    local c = cols[i]
+    if c.other then visited[c.other] = nil end
+  end
+  local x, y = body:getCentroid()
+  local k = 0
+  if self._sensor[sid] then -- (a sensor meets nothing: straight to the goal)
+    body:translate(goalX - x, goalY - y)
+    x, y = goalX, goalY
+  else
+    local own = rawget(self, '_responses')
+    local level = enter(self)
+    level.filter, level.sid, level.body, level.visited = filterFn or false, sid, body, visited
+    local size = body:getRadius()
+    local rising = (goalX - x) * upX + (goalY - y) * upY > 0
+    for _ = 1, 64 do
+      local dx, dy = goalX - x, goalY - y
+      if dx == 0 and dy == 0 then break end
+      flush(self)
+      if not first(self, level, body, sid, dx, dy, movePick, level, true, hit) then
+        body:translate(dx, dy)
+        x, y = goalX, goalY
+        break
+      end
+      local t, nx, ny = hit.t, hit.nx, hit.ny
+      -- stop short by SKIN along the normal, taken back along the leg (never before its start)
+      local skin = Space.SKIN * size + 1e-9 * (abs(x) + abs(y))
+      local dn = -(dx * nx + dy * ny)
+      local ts = t
+      if dn > 0 and not hit.overlapping then
+        ts = t - skin / dn
+        if ts < 0 then ts = 0 end
+      end
+      local tx, ty = x + ts * dx, y + ts * dy
+      k = k + 1
+      local col = cols[k]
+      if not col then
+        col = newCol()
+        cols[k] = col
+      end
+      local name = hit.pick
+      col.other, col.type, col.t, col.nx, col.ny = hit.body, name, t, nx, ny
+      col.touchX, col.touchY, col.x, col.y, col.overlapping = tx, ty, hit.x, hit.y, hit.overlapping
+      visited[hit.body] = true
+      hit.body, hit.pick = nil, nil
+      local fn = RESPONSES[name] or own and own[name]
+      if not fn then
+        fail(('%s: the filter returned %s, which is not a response (slide, touch, cross, bounce, or one'
+          .. ' added with addResponse)'):format(F, describe(name)))
+      end
+      local fx, fy, gx, gy
+      if name == 'slide' and opts and walkable(nx, ny) then
+        fx, fy, gx, gy = groundSlide(col, goalX, goalY)
+      elseif name == 'slide' and stepH > 0 and not walkable(nx, ny) then
+        local rx, ry = goalX - tx, goalY - ty
+        local ru = rx * upX + ry * upY
+        local hx, hy = rx - ru * upX, ry - ru * upY
+        if hx * nx + hy * ny < 0 then
+          body:translate(tx - x, ty - y)
+          x, y = tx, ty
+          if stepUp(self, level, body, sid, hx, hy, skin) then
+            local sx, sy = body:getCentroid()
+            fx, fy, gx, gy = sx, sy, sx, sy -- (the step used the leg's motion across up)
+            x, y = sx, sy
+          end
+        end
+      end
+      if not fx then fx, fy, gx, gy = fn(self, col, x, y, goalX, goalY) end
+      if not (finite(fx) and finite(fy) and finite(gx) and finite(gy)) then
+        fail(('%s: response %q must return four finite numbers (fromX, fromY, goalX, goalY), got %s, %s, %s, %s')
+          :format(F, name, describe(fx), describe(fy), describe(gx), describe(gy)))
+      end
+      if fx ~= x or fy ~= y then body:translate(fx - x, fy - y) end
+      x, y, goalX, goalY = fx, fy, gx, gy
+    end
+    if snapH > 0 and not rising then -- snap down onto walkable ground
+      local skin = Space.SKIN * size + 1e-9 * (abs(x) + abs(y))
+      flush(self)
+      if first(self, level, body, sid, -upX * snapH, -upY * snapH, solidPick, level, true, hit)
+        and not hit.overlapping and walkable(hit.nx, hit.ny) then
+        local ts = hit.t - skin / snapH
+        if ts > 0 then
+          body:translate(-upX * snapH * ts, -upY * snapH * ts)
+          x, y = x - upX * snapH * ts, y - upY * snapH * ts
+        end
+        k = k + 1
+        local col = cols[k]
+        if not col then
+          col = newCol()
+          cols[k] = col
+        end
+        col.other, col.type, col.t, col.nx, col.ny = hit.body, hit.pick, hit.t, hit.nx, hit.ny
+        col.touchX, col.touchY, col.x, col.y, col.overlapping = x, y, hit.x, hit.y, false
+        hit.body, hit.pick = nil, nil
+      end
+    end
+    leave(self)
+    level.filter, level.body, level.visited, level.sid = false, false, false, false
+    for i = 1, k do visited[cols[i].other] = nil end
+  end
+  for i = #cols, k + 1, -1 do cols[i] = nil end
+  return x, y, cols, k
+end
+
+return Space
