@@ -449,11 +449,11 @@ describe('S.weep', function()
 
     -- Touching at the start and moving in is a hit at t = 0 with or without a turn, as the
     -- translation gives. Boxes a (x [-5, 5]) and b (x [5, 15]) share the line x = 5; a
-    -- moving by (5, 0) while turning by 0.1 ends 5 deep inside b. Likewise the thin rectangle (y [-1, 1]) turning by +0.5 under
-    -- a box x [3, 7], y [1, 5] resting on its face y = 1: the face's right part (x > 0)
-    -- swings toward +y into the box at once, t = 0, normal (0, -1). (For two sharp bodies
-    -- that touch, the cores' closest points coincide: the normal is the axis that separates
-    -- them least, kernels.coreOverlap.)
+    -- moving by (5, 0) while turning by 0.1 ends 5 deep inside b. Likewise the thin
+    -- rectangle (y [-1, 1]) turning by +0.5 under a box x [3, 7], y [1, 5] resting on its
+    -- face y = 1: the face's right part (x > 0) swings toward +y into the box at once, t = 0,
+    -- normal (0, -1). (For two sharp bodies that touch, the cores' closest points coincide:
+    -- the normal is the axis that separates them least, kernels.coreOverlap.)
     it('turning bodies that touch at the start and move in hit at t = 0', function()
       local a, b = H.Rectangle(0, 0, 10, 10), H.Rectangle(10, 0, 10, 10)
       assert.is_false(S.triking(a, b))
