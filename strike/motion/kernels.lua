@@ -39,7 +39,10 @@
 --- the one the move grazes most (the smallest |n . d|: the move slides past the corner), and
 --- flags the hit a corner, so that a caller choosing among hits at the same time can prefer
 --- a face (a box landing exactly on the seam between two tiles meets a corner of the second
---- tile and the face of the first: the face wins; see sweep.lua).
+--- tile and the face of the first: the face wins; see sweep.lua). A rounded hit at a vertex of
+--- B's core is a corner too (a capsule over the seam meets the first tile's corner, with a
+--- normal tilted by how far past it the capsule is, and the second tile's face at the same
+--- time), and within a pair a hit inside an edge of B beats one at its vertex.
 ---
 --- Chain segments (base/ChainSegment.lua) are one-sided as in collide/chain.lua: a leaf
 --- whose centroid starts behind the segment's line never meets it, and a hit counts only
@@ -236,7 +239,8 @@ end
 
 ------------------------------------------------------------------ distance
 
--- The closest point to (px, py) on the segment (ax, ay)-(bx, by), and the squared distance.
+-- The closest point to (px, py) on the segment (ax, ay)-(bx, by), the squared distance, and
+-- the point's parameter along the segment (0 at a, 1 at b).
 local function closest(px, py, ax, ay, bx, by)
   local ex, ey = bx - ax, by - ay
   local l2 = ex * ex + ey * ey
@@ -247,7 +251,7 @@ local function closest(px, py, ax, ay, bx, by)
   end
   local qx, qy = ax + u * ex, ay + u * ey
   local dx, dy = px - qx, py - qy
-  return qx, qy, dx * dx + dy * dy
+  return qx, qy, dx * dx + dy * dy, u
 end
 
 -- The edges of a core: its records' slots k0 .. k1 give edges (k, next k), wrapping for
@@ -400,11 +404,13 @@ local function capsuleEntry(px, py, dx, dy, ax, ay, bx, by, r)
   return best
 end
 
--- Rounded pair's best hit so far.
-local rt, rnx, rny, rx, ry = huge, 0, 0, 0, 0
+-- Rounded pair's best hit so far (rcorner: it is at a vertex of B's core).
+local rt, rnx, rny, rx, ry, rcorner = huge, 0, 0, 0, 0, false
 
 -- Rays from P's core vertices (moving by (dx, dy)) against the capsules about Q's edges.
--- `flip`: P is B (moving by -d), Q is A.
+-- `flip`: P is B (moving by -d), Q is A. A hit at a vertex of B's core (an end of B's edge,
+-- or any hit from B's side) is a corner (see the header): among hits at the same time
+-- (within tieT, set by roundToi), one on the inside of an edge of B is preferred.
 local function roundOneWay(P, Q, dx, dy, r, rB, flip, chainSeg)
   local p0, p1 = span(P)
   local q0, q1, nq = span(Q)
@@ -417,17 +423,20 @@ local function roundOneWay(P, Q, dx, dy, r, rB, flip, chainSeg)
       if nq == 1 then j2 = j end
       local ax, ay, bx, by = Q[j], Q[j + VY], Q[j2], Q[j2 + VY]
       local t = capsuleEntry(px, py, dx, dy, ax, ay, bx, by, r)
-      if t < rt and t <= 1 then
+      if t <= 1 and t < rt + tieT then
         local hx, hy = px + t * dx, py + t * dy
-        local qx, qy = closest(hx, hy, ax, ay, bx, by)
-        local nx, ny = hx - qx, hy - qy
-        local l = sqrt(nx * nx + ny * ny)
-        if l > 0 then
-          nx, ny = nx / l, ny / l
-          if flip then nx, ny = -nx, -ny end -- (from B toward A)
-          if not chainSeg or admissible(chainSeg, nx, ny) then
-            rt, rnx, rny = t, nx, ny
-            if flip then rx, ry = px + nx * rB, py + ny * rB else rx, ry = qx + nx * rB, qy + ny * rB end
+        local qx, qy, _, u = closest(hx, hy, ax, ay, bx, by)
+        local corner = flip or u <= 0 or u >= 1
+        if t < rt - tieT or (rcorner and not corner) then
+          local nx, ny = hx - qx, hy - qy
+          local l = sqrt(nx * nx + ny * ny)
+          if l > 0 then
+            nx, ny = nx / l, ny / l
+            if flip then nx, ny = -nx, -ny end -- (from B toward A)
+            if not chainSeg or admissible(chainSeg, nx, ny) then
+              rt, rnx, rny, rcorner = t, nx, ny, corner
+              if flip then rx, ry = px + nx * rB, py + ny * rB else rx, ry = qx + nx * rB, qy + ny * rB end
+            end
           end
         end
       end
@@ -455,11 +464,13 @@ local function roundToi(A, B, dx, dy, tol)
     kernels.x, kernels.y = bx + nx * rB, by + ny * rB
     return true
   end
-  rt = huge
+  rt, rcorner = huge, false
+  local dl = sqrt(dx * dx + dy * dy)
+  tieT = dl > 0 and tol / dl or 0
   roundOneWay(A, B, dx, dy, r, rB, false, chainSeg)
   roundOneWay(B, A, -dx, -dy, r, rB, true, chainSeg)
   if rt == huge then return false end
-  kernels.t, kernels.nx, kernels.ny, kernels.corner = rt, rnx, rny, false
+  kernels.t, kernels.nx, kernels.ny, kernels.corner = rt, rnx, rny, rcorner
   kernels.x, kernels.y = rx, ry
   return true
 end

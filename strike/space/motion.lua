@@ -28,6 +28,7 @@ local filter = require(ROOT .. '.space.filter')
 
 local collide, translate, leavesOf, better = compound.collide, sweep.translate, sweep.leavesOf, sweep.better
 local overlapHit = sweep.overlapHit
+local TIE = require(ROOT .. '.motion.kernels').TIE
 local queryFilter, checkQuery = filter.query, filter.checkQuery
 local fail, describe, what, badSelf, finite = check.fail, check.describe, check.what, check.badSelf, check.finite
 local sqrt, abs, huge, type = math.sqrt, math.abs, math.huge, type
@@ -82,8 +83,8 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out)
         end
         if t then
           local adn = abs(dx * nx + dy * ny)
-          -- (ties within round-off of the positions: see sweep.better)
-          local tieT = dl > 0 and 1e-9 * (abs(x) + abs(y) + dl) / dl * 1e-3 or 0
+          -- (ties within round-off of the positions, TIE relative: see sweep.better)
+          local tieT = dl > 0 and TIE * (abs(x) + abs(y) + dl) / dl or 0
           if not found or better(t, corner, adn, bt, bcorner, badn, tieT) then
             found, bt, bcorner, badn = true, t, corner, adn
             out.t, out.x, out.y, out.nx, out.ny, out.overlapping = t, x, y, nx, ny, overlapping
