@@ -201,6 +201,16 @@ describe('S.pace motion', function()
         assert(cols == first and n == 2)
       end, 10000)
       alloc.nothingPerCall(kb, 'Space:move')
+      -- moves that meet two bodies, then none: the records of the longer list are kept for the
+      -- next one
+      local odd = false
+      kb = alloc.kbPer(function()
+        odd = not odd
+        box:translateTo(30, 30)
+        local _, _, cols, n = sp:move(box, odd and 100 or 30, odd and 100 or 20)
+        assert(cols == first and n == (odd and 2 or 0) and #cols == n)
+      end, 10000)
+      alloc.nothingPerCall(kb, 'Space:move, two collisions then none')
     end)
 
     it('moves a sensor straight to its goal, and nothing stops at a sensor', function()

@@ -234,9 +234,22 @@ local function movePick(level, other, id)
   return name
 end
 
-local function newCol()
-  return { other = false, type = 'slide', t = 0, nx = 0, ny = 0, touchX = 0, touchY = 0, x = 0, y = 0,
-    overlapping = false }
+-- The record for the k-th collision of a move: the list's own, or one kept from a longer
+-- list before (cols.spare), or a new one.
+local function colAt(cols, k)
+  local col = cols[k]
+  if col then return col end
+  local spare = cols.spare
+  local n = #spare
+  if n > 0 then
+    col = spare[n]
+    spare[n] = nil
+  else
+    col = { other = false, type = 'slide', t = 0, nx = 0, ny = 0, touchX = 0, touchY = 0, x = 0, y = 0,
+      overlapping = false }
+  end
+  cols[k] = col
+  return col
 end
 
 -- The options of move: the up direction, the cosine of the steepest walkable slope (false:
@@ -393,7 +406,7 @@ function Space:move(body, goalX, goalY, filterFn, opts)
   readOptions(F, opts)
   local cols = rawget(self, '_cols')
   if not cols then
-    cols = { visited = {}, hit = {} }
+    cols = { visited = {}, hit = {}, spare = {} }
     self._cols = cols
   end
   local visited, hit = cols.visited, cols.hit
@@ -433,11 +446,7 @@ function Space:move(body, goalX, goalY, filterFn, opts)
       end
       local tx, ty = x + ts * dx, y + ts * dy
       k = k + 1
-      local col = cols[k]
-      if not col then
-        col = newCol()
-        cols[k] = col
-      end
+      local col = colAt(cols, k)
       local name = hit.pick
       col.other, col.type, col.t, col.nx, col.ny = hit.body, name, t, nx, ny
       col.touchX, col.touchY, col.x, col.y, col.overlapping = tx, ty, hit.x, hit.y, hit.overlapping
@@ -484,11 +493,7 @@ function Space:move(body, goalX, goalY, filterFn, opts)
           x, y = x - upX * snapH * ts, y - upY * snapH * ts
         end
         k = k + 1
-        local col = cols[k]
-        if not col then
-          col = newCol()
-          cols[k] = col
-        end
+        local col = colAt(cols, k)
         col.other, col.type, col.t, col.nx, col.ny = hit.body, hit.pick, hit.t, hit.nx, hit.ny
         col.touchX, col.touchY, col.x, col.y, col.overlapping = x, y, hit.x, hit.y, false
         hit.body, hit.pick = nil, nil
@@ -498,7 +503,13 @@ function Space:move(body, goalX, goalY, filterFn, opts)
     level.filter, level.body, level.visited, level.sid = false, false, false, false
     for i = 1, k do visited[cols[i].other] = nil end
   end
-  for i = #cols, k + 1, -1 do cols[i] = nil end
+  local spare = cols.spare
+  for i = #cols, k + 1, -1 do -- (kept for a longer list later, without the body they named)
+    local col = cols[i]
+    col.other = false
+    spare[#spare + 1] = col
+    cols[i] = nil
+  end
   return x, y, cols, k
 end
 
