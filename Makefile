@@ -2,7 +2,7 @@
 # check, the LÖVE screenshot checks and the busted suite under every Lua VM.
 VMS ?= lua5.1 lua5.2 lua5.3 lua5.4 luajit
 
-.PHONY: test deps lint annotations annotations-fix spec copy-check rockspec-check love-check bench bench-space demo
+.PHONY: test deps lint annotations annotations-fix spec copy-check rockspec-check love-check bench bench-space bench-move demo
 
 test: deps lint annotations copy-check rockspec-check love-check spec
 
@@ -63,6 +63,17 @@ SPACE_ARGS ?=
 bench-space:
 	@status=0; for vm in $(BENCH_VMS); do \
 	  echo "== bench/space.lua under $$vm"; $$vm bench/space.lua --save $(SPACE_ARGS) || status=1; echo; \
+	done; exit $$status
+
+# bench/move.lua under each of BENCH_VMS in turn: S.pace's move of one 16x16 box through 1,000
+# static boxes beside bump's and slick's world:move (STRIKE_PEERS): µs per move, collisions per
+# move, KB per move with the GC stopped; tables printed and saved to bench/results/move-<vm>.csv.
+# MOVE_ARGS="--moves 2000" for a shorter run.
+MOVE_ARGS ?=
+
+bench-move:
+	@status=0; for vm in $(BENCH_VMS); do \
+	  echo "== bench/move.lua under $$vm"; $$vm bench/move.lua --save $(MOVE_ARGS) || status=1; echo; \
 	done; exit $$status
 
 # `make demo`: the interactive LÖVE demo (love demo) where LÖVE and a display are present;
