@@ -213,6 +213,60 @@ describe('S.pace motion', function()
       alloc.nothingPerCall(kb, 'Space:move, two collisions then none')
     end)
 
+    it('stops in a corner it slides into, and comes back to a body it slid along', function()
+      -- A V of two walls 4 wide, their centre lines from (-50, 13.7) and (50, 13.7) down to
+      -- the apex (0, 57 + 50 cos 30 deg) = (0, 100.30127): a circle r = 5 dropped in touches
+      -- both inner faces (2 from the centre lines) with its centre on the axis, at a distance
+      -- (5 + 2) / sin 30 deg = 14 above the apex: y = 86.30127. It slides down the first wall
+      -- into the second, whose slide would turn it back into the first: it stops there, after
+      -- two collisions (without the corner rule it bounced between them 25 times).
+      local sp = S.pace()
+      local a = sp:add(H.Rectangle(-25, 57, 4, 100, rad(-30)))
+      local b = sp:add(H.Rectangle(25, 57, 4, 100, rad(30)))
+      local ball = sp:add(H.Circle(3, 0, 5))
+      local x, y, cols, n = sp:move(ball, 3, 200)
+      assert.equal(2, n)
+      assert.equal(b, cols[1].other)
+      assert.equal(a, cols[2].other)
+      near(x, 0, 1e-4)
+      near(y, 100.30127018922193 - 14, 1e-4)
+      assert.is_false(S.triking(ball, a))
+      assert.is_false(S.triking(ball, b))
+      -- a box pushed down and sideways onto a floor and against a tilted wall: the slide along
+      -- the wall turns down into the floor it slid along first, and the floor stops it again
+      sp = S.pace()
+      local floor = sp:add(H.Rectangle(0, 110, 400, 20)) -- top y = 100
+      local wall = sp:add(H.Rectangle(60, 60, 10, 200, rad(20)))
+      local box = sp:add(H.Rectangle(0, 90, 10, 10))
+      sp:move(box, 100, 120)
+      assert.is_false(S.triking(box, floor))
+      assert.is_false(S.triking(box, wall))
+    end)
+
+    it('sees bodies moved, added or removed between moves (its candidates are kept only while none is)',
+      function()
+        local sp = S.pace()
+        local box = sp:add(H.Rectangle(0, 0, 10, 10))
+        local far = sp:add(H.Rectangle(500, 0, 10, 10))
+        -- (the candidates are kept for this move's box padded by the box's radius and the
+        -- move's length: x from about -14 to 16, where the next move stays)
+        local x = sp:move(box, 2, 0)
+        near(x, 2)
+        far:translateTo(15, 0) -- now in the way: its left face at x = 10
+        local _, _, cols, n = sp:move(box, 8, 0)
+        assert.equal(1, n)
+        assert.equal(far, cols[1].other)
+        near(box:getCentroid(), 5, 1e-4)
+        sp:remove(far)
+        x = sp:move(box, 12, 0)
+        near(x, 12)
+        local new = sp:add(H.Rectangle(25, 0, 10, 10)) -- left face at x = 20
+        _, _, cols, n = sp:move(box, 20, 0)
+        assert.equal(1, n)
+        assert.equal(new, cols[1].other)
+        near(box:getCentroid(), 15, 1e-4)
+      end)
+
     it('moves a sensor straight to its goal, and nothing stops at a sensor', function()
       local sp = S.pace()
       sp:add(H.Rectangle(50, 0, 10, 200), { sensor = true })

@@ -55,7 +55,7 @@ local ROOT = (...):match('^(.-)%.motion%.[^%.]+$')
 local layout = require(ROOT .. '.base.layout')
 local admissible = require(ROOT .. '.collide.chain').admissible
 
-local COUNT, X, Y, R = layout.COUNT, layout.X, layout.Y, layout.R
+local COUNT, HALF, X, Y, R = layout.COUNT, layout.HALF, layout.X, layout.Y, layout.R
 local STRIDE, FIRST, VY, NX, NY, D = layout.STRIDE, layout.FIRST, layout.VY, layout.NX, layout.NY, layout.D
 local HASPREV, HASNEXT, CONVEX1, CONVEX2 = layout.HASPREV, layout.HASNEXT, layout.CONVEX1, layout.CONVEX2
 local G1X, G1Y, G2X, G2Y = layout.G1X, layout.G1Y, layout.G2X, layout.G2Y
@@ -95,6 +95,17 @@ local function minProj(s, k0, k1, ux, uy)
     if p < m then m = p end
   end
   return m
+end
+
+-- Both at once: the least and the greatest projection.
+local function minMaxProj(s, k0, k1, ux, uy)
+  local lo_, hi_ = huge, -huge
+  for k = k0, k1, STRIDE do
+    local p = ux * s[k] + uy * s[k + VY]
+    if p < lo_ then lo_ = p end
+    if p > hi_ then hi_ = p end
+  end
+  return lo_, hi_
 end
 
 local function maxProj(s, k0, k1, ux, uy)
@@ -183,13 +194,34 @@ end
 local function scan(A, B)
   local a0, a1, na = span(A)
   local b0, b1, nb = span(B)
-  if nb >= 2 then
+  -- (a centrally symmetric core, HALF > 0, has its faces in opposite pairs k, k + HALF: one
+  -- pass over the other shape gives the least projection for face k and the greatest, which
+  -- is minus the least for face k + HALF)
+  local half = nb >= 4 and B[HALF] or 0
+  if half > 0 then
+    local opp = STRIDE * half
+    for k = b0, b0 + opp - STRIDE, STRIDE do
+      local ux, uy = B[k + NX], B[k + NY]
+      local lo_, hi_ = minMaxProj(A, a0, a1, ux, uy)
+      step(ux, uy, B[k + D] - lo_, 1, k)
+      step(B[k + opp + NX], B[k + opp + NY], B[k + opp + D] + hi_, 1, k + opp)
+    end
+  elseif nb >= 2 then
     for k = b0, b1, STRIDE do
       local ux, uy = B[k + NX], B[k + NY]
       step(ux, uy, B[k + D] - minProj(A, a0, a1, ux, uy), 1, k)
     end
   end
-  if na >= 2 then
+  half = na >= 4 and A[HALF] or 0
+  if half > 0 then
+    local opp = STRIDE * half
+    for k = a0, a0 + opp - STRIDE, STRIDE do
+      local mx, my = A[k + NX], A[k + NY]
+      local lo_, hi_ = minMaxProj(B, b0, b1, mx, my)
+      step(-mx, -my, A[k + D] - lo_, 2, k)
+      step(-A[k + opp + NX], -A[k + opp + NY], A[k + opp + D] + hi_, 2, k + opp)
+    end
+  elseif na >= 2 then
     for k = a0, a1, STRIDE do
       local mx, my = A[k + NX], A[k + NY]
       step(-mx, -my, A[k + D] - minProj(B, b0, b1, mx, my), 2, k)

@@ -60,6 +60,10 @@ function Space:new()
   -- the queries' scratch, one level per query in progress (a filter may query the space:
   -- see enter)
   self._depth, self._levels = 0, {}
+  -- the broadphase's version: it changes with every body added, removed or moved, but for
+  -- the body a move is moving (_mover, its id; 0 when none), so that a move can keep its
+  -- candidates while only it moves (strike/space/motion.lua)
+  self._version, self._mover = 0, 0
   -- contact tracking: records by pair key, the touching records of the last call (in
   -- order) and of this one, and a pool of ended records
   self._active, self._prev, self._cur, self._pool, self._ended = {}, {}, {}, {}, {}
@@ -131,6 +135,7 @@ function Space:_moved(body)
   local queued = self._queued
   if not queued[id] then
     queued[id] = true
+    if id ~= self._mover then self._version = self._version + 1 end
     local n = self._nq + 1
     self._nq = n
     self._queue[n] = id
@@ -230,6 +235,7 @@ function Space:add(body, opts)
   if other then fail('strike.Space:add: argument 1 is in another space; remove it from that one first') end
   local layer, mask, group, sensor = options('strike.Space:add', opts)
   local id = self._tree:insert(body:getBounds())
+  self._version = self._version + 1
   if self._nextRank >= K - 1 then renumber(self) end
   local r = self._nextRank + 1
   self._nextRank = r
@@ -286,6 +292,7 @@ function Space:remove(body)
   if not isSpace(self) then badSelf(self, 'strike.Space:remove') end
   local id = idOf(self, 'strike.Space:remove', body)
   self._tree:remove(id)
+  self._version = self._version + 1
   self._body[id], self._rank[id], self._layer[id], self._mask[id] = false, false, false, false
   self._group[id], self._sensor[id], self._queued[id] = false, false, false
   body._space, body._sid = false, nil

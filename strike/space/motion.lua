@@ -8,15 +8,19 @@
 ---
 --- move, step by step. From the body's centroid toward the goal:
 ---  1. the first hit of the leg among the bodies that the layers, masks, groups, the pair
----     filter and `filter(body, other)` allow (a response name; nil: ignore that body), each
----     other body at most once per move; sensors are skipped (their events come from
----     collisions()). A body overlapping at the start counts only when the move goes
----     further into it;
+---     filter and `filter(body, other)` allow (a response name; nil: ignore that body); a
+---     body passed through ('cross') or met with a game's own response is not met again in
+---     the move; sensors are skipped (their events come from collisions()). A body
+---     overlapping at the start counts only when the move goes further into it;
 ---  2. the body stops just short of the touch: a gap of SKIN (relative to its size) along
 ---     the normal, taken back along the leg, so that the next leg starts apart from what it
 ---     touched (a leg that slides along a surface then never meets the seams of the tiles
 ---     that make it);
----  3. the response (Space:addResponse) gives where the next leg starts and its goal.
+---  3. the response (Space:addResponse) gives where the next leg starts and its goal; a
+---     slide that turns back into the surface slid along just before (a corner) stops.
+--- The candidates of a leg are kept for the next legs and moves while nothing else in the
+--- space moves (Space.lua's _version), in a box padded by the body's radius and the move's
+--- length; the body's own place in the broadphase waits for the next query that needs it.
 --- The collision records (`other`, `type`, `t`, `nx`, `ny`, `touchX`, `touchY`, `x`, `y`,
 --- `overlapping`) and the list are the space's, reused by the next move.
 local ROOT = (...):match('^(.-)%.space%.[^%.]+$')
@@ -29,6 +33,8 @@ local filter = require(ROOT .. '.space.filter')
 local collide, translate, leavesOf, better = compound.collide, sweep.translate, sweep.leavesOf, sweep.better
 local overlapHit = sweep.overlapHit
 local TIE = require(ROOT .. '.motion.kernels').TIE
+local layout = require(ROOT .. '.base.layout')
+local DIRTY, MINX, MINY, MAXX, MAXY = layout.DIRTY, layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
 local queryFilter, checkQuery = filter.query, filter.checkQuery
 local fail, describe, what, badSelf, finite = check.fail, check.describe, check.what, check.badSelf, check.finite
 local sqrt, abs, huge, type = math.sqrt, math.abs, math.huge, type
@@ -51,12 +57,30 @@ local hitScratch = {}
 -- (dx, dy), among the candidates of `level`: the hit in `out` (plus out.body) or false.
 -- `pick(other, id)` says whether other may be hit: a truthy value (kept in out.pick), or
 -- false. `away`: a body overlapping at the start counts only when the move goes further in.
-local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out)
+-- The candidates are those of the box the move sweeps (the broadphase brought up to date
+-- first). With `cache` (a move's), they are those of a larger box kept from an earlier leg or
+-- move while nothing but the body moving has moved (the body itself waits in the queue).
+local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cache, pad)
   local x0, y0, x1, y1 = b:getBounds()
   if dx < 0 then x0 = x0 + dx else x1 = x1 + dx end
   if dy < 0 then y0 = y0 + dy else y1 = y1 + dy end
-  local n = candidates(self, level, x0, y0, x1, y1)
-  local ids, bodies, sensor = level.ids, self._body, self._sensor
+  local ids, n
+  if cache then
+    n = cache.n
+    if not (cache.version == self._version and cache.x0 <= x0 and cache.y0 <= y0 and cache.x1 >= x1
+      and cache.y1 >= y1) then
+      flush(self)
+      local qx0, qy0, qx1, qy1 = x0 - pad, y0 - pad, x1 + pad, y1 + pad
+      n = candidates(self, cache, qx0, qy0, qx1, qy1)
+      cache.n, cache.version, cache.x0, cache.y0, cache.x1, cache.y1 = n, self._version, qx0, qy0, qx1, qy1
+    end
+    ids = cache.ids
+  else
+    flush(self)
+    n = candidates(self, level, x0, y0, x1, y1)
+    ids = level.ids
+  end
+  local bodies, sensor = self._body, self._sensor
   local la, na = leavesOf(b, one1)
   local found, bt, bcorner, badn = false, huge, false, huge
   local dl = sqrt(dx * dx + dy * dy)
@@ -64,7 +88,17 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out)
     local id = ids[c]
     local other = bodies[id]
     if other and id ~= self_id and not sensor[id] then
-      local p = pick(ctx, other, id)
+      -- (the exact bounds first: a candidate of a larger box is often outside the leg's)
+      local bx0, by0, bx1, by1
+      if other._pose then
+        if other[DIRTY] then other:_refresh() end
+        bx0, by0, bx1, by1 = other[MINX], other[MINY], other[MAXX], other[MAXY]
+      elseif other._clean then -- (a collider's bounds slots, valid while it is clean)
+        bx0, by0, bx1, by1 = other[MINX], other[MINY], other[MAXX], other[MAXY]
+      else
+        bx0, by0, bx1, by1 = other:getBounds()
+      end
+      local p = bx0 <= x1 and bx1 >= x0 and by0 <= y1 and by1 >= y0 and pick(ctx, other, id)
       if p then
         local m = collide(b, other, mtv)
         local t, x, y, nx, ny, corner, overlapping
@@ -336,7 +370,6 @@ local probe = {}
 -- Cast the body by (dx, dy) against solid bodies and move it as far as it goes, SKIN short:
 -- the fraction moved, and the hit (in `probe`) or false.
 local function advance(self, level, body, sid, dx, dy, skin)
-  flush(self)
   local h = first(self, level, body, sid, dx, dy, solidPick, level, true, probe)
   local ts = 1
   if h then
@@ -404,10 +437,20 @@ function Space:move(body, goalX, goalY, filterFn, opts)
       what(filterFn)))
   end
   readOptions(F, opts)
-  local cols = rawget(self, '_cols')
+  local level = enter(self)
+  -- The collision list of the depth this move runs at (one for moves at the top, another for
+  -- a move run from a filter of a query or of another move, and so on).
+  local depth = self._depth
+  local lists = rawget(self, '_cols')
+  if not lists then
+    lists = {}
+    self._cols = lists
+  end
+  local cols = lists[depth]
   if not cols then
-    cols = { visited = {}, hit = {}, spare = {} }
-    self._cols = cols
+    cols = { visited = {}, hit = {}, spare = {}, cache = { ids = {}, n = 0, version = -1, x0 = 0, y0 = 0, x1 = 0,
+      y1 = 0 } }
+    lists[depth] = cols
   end
   local visited, hit = cols.visited, cols.hit
   -- (a move that a filter or response interrupted with an error left its marks: clear them)
@@ -420,17 +463,25 @@ function Space:move(body, goalX, goalY, filterFn, opts)
   if self._sensor[sid] then -- (a sensor meets nothing: straight to the goal)
     body:translate(goalX - x, goalY - y)
     x, y = goalX, goalY
+    leave(self)
   else
     local own = rawget(self, '_responses')
-    local level = enter(self)
     level.filter, level.sid, level.body, level.visited = filterFn or false, sid, body, visited
     local size = body:getRadius()
     local rising = (goalX - x) * upX + (goalY - y) * upY > 0
+    -- The candidates are kept from leg to leg and from move to move while nothing but this
+    -- body moves (Space.lua, _version), for a move at the top only (no other move under way:
+    -- _mover is 0), in a box padded by the body's radius and the move's length.
+    local cache, pad = nil, 0
+    if self._mover == 0 then
+      cache, pad = cols.cache, size + sqrt((goalX - x) ^ 2 + (goalY - y) ^ 2)
+      self._mover = sid
+    end
+    local pnx, pny = 0, 0 -- (the normal of the last surface slid along)
     for _ = 1, 64 do
       local dx, dy = goalX - x, goalY - y
       if dx == 0 and dy == 0 then break end
-      flush(self)
-      if not first(self, level, body, sid, dx, dy, movePick, level, true, hit) then
+      if not first(self, level, body, sid, dx, dy, movePick, level, true, hit, cache, pad) then
         body:translate(dx, dy)
         x, y = goalX, goalY
         break
@@ -450,7 +501,10 @@ function Space:move(body, goalX, goalY, filterFn, opts)
       local name = hit.pick
       col.other, col.type, col.t, col.nx, col.ny = hit.body, name, t, nx, ny
       col.touchX, col.touchY, col.x, col.y, col.overlapping = tx, ty, hit.x, hit.y, hit.overlapping
-      visited[hit.body] = true
+      -- (a body passed through, or met with a response of the game's, is not met again in
+      -- this move; one slid along, touched or bounced off can be: the rest of the move may
+      -- turn back into it, in a corner)
+      if name ~= 'slide' and name ~= 'touch' and name ~= 'bounce' then visited[hit.body] = true end
       hit.body, hit.pick = nil, nil
       local fn = RESPONSES[name] or own and own[name]
       if not fn then
@@ -479,12 +533,18 @@ function Space:move(body, goalX, goalY, filterFn, opts)
         fail(('%s: response %q must return four finite numbers (fromX, fromY, goalX, goalY), got %s, %s, %s, %s')
           :format(F, name, describe(fx), describe(fy), describe(gx), describe(gy)))
       end
+      if name == 'slide' then
+        -- In a corner: a slide along this surface that goes back into the last one slid along
+        -- (a different one) would only bounce between the two; it stops there.
+        local c = pnx * ny - pny * nx
+        if (c > 1e-9 or c < -1e-9) and (gx - fx) * pnx + (gy - fy) * pny < 0 then gx, gy = fx, fy end
+        pnx, pny = nx, ny
+      end
       if fx ~= x or fy ~= y then body:translate(fx - x, fy - y) end
       x, y, goalX, goalY = fx, fy, gx, gy
     end
     if snapH > 0 and not rising then -- snap down onto walkable ground
       local skin = Space.SKIN * size + 1e-9 * (abs(x) + abs(y))
-      flush(self)
       if first(self, level, body, sid, -upX * snapH, -upY * snapH, solidPick, level, true, hit)
         and not hit.overlapping and walkable(hit.nx, hit.ny) then
         local ts = hit.t - skin / snapH
@@ -500,6 +560,7 @@ function Space:move(body, goalX, goalY, filterFn, opts)
       end
     end
     leave(self)
+    if cache then self._mover = 0 end
     level.filter, level.body, level.visited, level.sid = false, false, false, false
     for i = 1, k do visited[cols[i].other] = nil end
   end
