@@ -1,6 +1,6 @@
 --- strike's interactive demo, for LÖVE 11.4. From the repository root:
 ---
----   love demo                      interactive: keys 1-5 switch scenes, H or F1 toggles the
+---   love demo                      interactive: keys 1-6 switch scenes, H or F1 toggles the
 ---                                  help, Escape quits
 ---   love demo --scene N            start with scene N
 ---   love demo --frames N           quit by itself (exit code 0) after N frames, printing the

@@ -1,6 +1,8 @@
 --- The headless demo: a small scene, its collisions, MTVs and contact points, then the same
 --- bodies in an S.pace with a rectangle query and a ray cast through the space, reported as
---- a table and drawn to an SVG file. Plain Lua, every VM:
+--- a table and drawn to an SVG file; then space:move, in the LÖVE demo's Platformer scene run
+--- without LÖVE (a character walking a level, bullets stopped by thin walls). Plain Lua,
+--- every VM:
 ---   lua examples/demo.lua [path.svg]        (or `make demo`)
 --- As a module, `require('examples.demo').run(path, write)` builds the same scene, writes
 --- the SVG to `path` and sends the report, line by line, to `write` (default: io.write).
@@ -33,6 +35,9 @@ demo.QUERY = { 130, 170, 250, 30 }
 --- The ray cast through the space: origin x, y and direction dx, dy (from the top left,
 --- across the scene).
 demo.RAY = { 20, 40, 1, 0.45 }
+--- The steps of 1/60 s the Platformer scene (demo/scenes/platformer.lua) runs for the report:
+--- its scripted walk there and back, over the one-way platform, the slopes and the stairs.
+demo.MOTION_STEPS = 1200
 
 local function fmt(v) return ('%.1f'):format(v) end
 
@@ -72,7 +77,8 @@ local COLOURS = { '#7a8a99', '#d98c3f', '#c9663d', '#3f7fd9', '#8f5fc9', '#3fb58
 --- Build the scene, report it through `write` and draw it to the SVG file at `path`.
 ---@param path string @param write function|nil
 ---@return table summary { pairs = n, collisions = n, contacts = n, shapes = n, query = { names }, rayHit =
----  name or nil, ray = { name =, distance =, x =, y =, nx =, ny = } or nil }
+---  name or nil, ray = { name =, distance =, x =, y =, nx =, ny = } or nil, motion = { x =, y =, ground =
+---  name or nil, surfaces = n, fired = n, stopped = n, passed = n } }
 function demo.run(path, write)
   write = write or io.write
   local scene = demo.scene()
@@ -161,6 +167,21 @@ function demo.run(path, write)
   else
     write(('space:rayCast from (%s, %s) along (%s, %s): no hit\n'):format(ox, oy, dx, dy))
   end
+  -- space:move: the LÖVE demo's Platformer scene, stepped without LÖVE
+  local platformer = require('demo.scenes.platformer')
+  local state = platformer.new(S, 800, 600)
+  for _ = 1, demo.MOTION_STEPS do platformer.step(state, platformer.STEP) end
+  local cx, cy = state.character:getCentroid()
+  local surfaces = 0
+  for _ in pairs(state.touched) do surfaces = surfaces + 1 end
+  local st = state.stats
+  summary.motion = { x = cx, y = cy, ground = state.grounded and state.names[state.ground] or nil,
+    surfaces = surfaces, fired = st.fired, stopped = st.stopped, passed = st.passed }
+  write(('space:move in the demo\'s Platformer scene, %d steps of 1/60 s: the character at (%s, %s), on the'
+    .. ' ground: %s, stood on %d surfaces (tiles, slopes, steps, the one-way platform); bullets at %d px a step:'
+    .. ' %d fired, %d stopped at a wall, %d passed\n'):format(demo.MOTION_STEPS, fmt(cx), fmt(cy),
+    state.grounded and ('yes (%s)'):format(state.names[state.ground]) or 'no', surfaces, platformer.BULLET_SPEED,
+    st.fired, st.stopped, st.passed))
   svg[#svg + 1] = ('<text class="legend" x="12" y="428" font-family="sans-serif" font-size="12"'
     .. ' fill="#333">Red: MTVs, drawn %d× their length (true values in the table). Green: contacts.'
     .. ' Blue: space:queryRect. Magenta: space:rayCast.</text>'):format(ARROW_SCALE)

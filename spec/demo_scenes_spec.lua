@@ -1,7 +1,9 @@
 -- The LÖVE demo's scenes driven in plain Lua through their input handlers, as demo/main.lua
 -- drives them from LÖVE's callbacks: dragging and turning shapes, aiming rays, drawing
--- concave outlines (valid and not), walking over tile seams and chain joints, and the
--- stress scene's space: its pairs, contact events and counts against a brute-force loop.
+-- concave outlines (valid and not), walking over tile seams and chain joints, the stress
+-- scene's space: its pairs, contact events and counts against a brute-force loop, and the
+-- platformer's space:move: a character over tiles, slopes, stairs and a one-way platform,
+-- and bullets that no thin wall lets through.
 local S = require('strike')
 local scenes = require('demo.scenes.list')
 
@@ -436,8 +438,134 @@ describe('demo scene: stress', function()
   end)
 end)
 
+describe('demo scene: platformer', function()
+  local scene = sceneNamed('Platformer')
+
+  it('walks the scripted route over every kind of ground, never ending a step inside the level', function()
+    local state = scene.new(S, W, H)
+    assert.is_true(state.grounded)
+    assert.equals('tile 1', state.names[state.ground])
+    local onSlope = 0
+    for i = 1, 1200 do
+      local px = state.character:getCentroid()
+      scene.step(state, scene.STEP)
+      local x = state.character:getCentroid()
+      local where = ('step %d, x = %.3f'):format(i, x)
+      -- nothing of the level overlaps it but the one-way platform, while it jumps up through it
+      local recs, n = state.space:check(state.character)
+      for k = 1, n do
+        local name = state.names[recs[k].b]
+        assert.is_true(name == 'one-way platform', where .. ': inside ' .. name)
+      end
+      assert.is_true(x >= 10 - 1e-9 and x <= W - 10 + 1e-9, where)
+      -- on a slope (the option `slope`): on the ground at every step, walking at full speed
+      -- across it, up or down (`snap`: no hops down)
+      if (x > 270 and x < 350) or (x > 450 and x < 490) then
+        assert.is_true(state.grounded, where .. ': in the air over a slope')
+        assert.near(scene.STEP * 150, math.abs(x - px), 1e-9, where)
+        onSlope = onSlope + 1
+      end
+    end
+    assert.is_true(onSlope > 100)
+    for _, name in ipairs({ 'tile 1', 'tile 8', 'slope 26.6°', 'plateau 1', 'slope 45°', 'one-way platform',
+      'tile 12' }) do
+      assert.is_true(state.touched[name], 'never stood on ' .. name)
+    end
+    -- every step of the stairs, up (`step`: 6-px risers, up to 10 climbed) and down
+    for k = 1, 6 do assert.is_true(state.touched['step ' .. k], 'never stood on step ' .. k) end
+  end)
+
+  it('jumps up through the one-way platform from below and lands on it from above', function()
+    local state = scene.new(S, W, H)
+    local P = scene.PLATFORM
+    local below, above, landed = false, false, nil
+    for i = 1, 60 do
+      scene.step(state, scene.STEP)
+      local x0, y0, x1, y1 = state.character:getBounds()
+      if x1 > P[1] and x0 < P[3] then
+        if y0 > P[2] then below = true end              -- wholly below the platform
+        if below and y1 < P[2] then above = true end    -- then wholly above: it passed through
+      end
+      if above and state.grounded and state.names[state.ground] == 'one-way platform' then
+        landed = i
+        assert.near(P[2], y1, 1e-3) -- standing on it
+        break
+      end
+    end
+    assert.is_true(below and above, 'never passed up through the platform')
+    assert.is_truthy(landed, 'never landed on the platform')
+    -- it stands there: solid from above
+    local _, y = state.character:getCentroid()
+    scene.step(state, scene.STEP)
+    local _, y2 = state.character:getCentroid()
+    assert.near(y, y2, 1e-9)
+    assert.is_true(state.grounded)
+    assert.matches('on ground: yes %(one%-way platform%)', scene.status(state)[1])
+  end)
+
+  it('stops every bullet at its wall (1 to 4 px and an edge, 400 px a step), then takes it out of the space',
+    function()
+      local state = scene.new(S, W, H)
+      local fixed = state.space:count() - #state.bullets
+      local perLane = {}
+      for i = 1, 300 do
+        scene.step(state, scene.STEP)
+        local st = state.stats
+        assert.equals(0, st.passed, 'step ' .. i)
+        for _, b in ipairs(state.bullets) do
+          local x = b.body:getCentroid()
+          local face = scene.LANES[b.lane].x
+          assert.is_true(x + scene.BULLET_R <= face, ('step %d: a bullet past the wall at x = %d'):format(i, face))
+          if b.hold == scene.HOLD then -- stopped this step: at the wall, a skin short
+            assert.near(face, x + scene.BULLET_R, 1e-3)
+            perLane[b.lane] = (perLane[b.lane] or 0) + 1
+          end
+        end
+        assert.equals(st.fired, st.stopped + st.inFlight, 'step ' .. i)
+        -- bullets stay scene.HOLD steps once stopped, then leave the space
+        assert.equals(fixed + #state.bullets, state.space:count())
+        assert.is_true(#state.bullets <= scene.HOLD / scene.FIRE_EVERY + 2)
+      end
+      for lane = 1, #scene.LANES do assert.is_true((perLane[lane] or 0) >= 25, 'lane ' .. lane) end
+      assert.matches('bullets stopped: ' .. state.stats.stopped .. ', passed: 0$', scene.status(state)[2])
+    end)
+
+  it('gives the character to the arrow keys (the script stops), and P gives it back', function()
+    local state = scene.new(S, W, H)
+    scene.keypressed(state, 'left')
+    assert.is_false(state.script)
+    for _ = 1, 10 do scene.update(state, scene.STEP) end
+    scene.keyreleased(state, 'left')
+    local x = state.character:getCentroid()
+    assert.near(scene.START_X - 25, x, 1e-9) -- 10 steps of 2.5 px, to the left
+    scene.keypressed(state, 'up')
+    scene.update(state, scene.STEP)
+    scene.keyreleased(state, 'up')
+    assert.is_false(state.grounded)
+    assert.matches('your keys$', scene.status(state)[1])
+    for _ = 1, 120 do scene.update(state, scene.STEP) end
+    assert.is_true(state.grounded) -- landed again, where it jumped
+    assert.near(scene.START_X - 25, (state.character:getCentroid()), 1e-9)
+    scene.keypressed(state, 'p')
+    assert.is_true(state.script)
+    scene.update(state, scene.STEP)
+    assert.near(scene.START_X - 25 + 2.5, (state.character:getCentroid()), 1e-9)
+  end)
+
+  it('B shows and hides the broadphase (S.howSpace)', function()
+    local state = scene.new(S, W, H)
+    local P, calls = recorder()
+    scene.paint(state, P)
+    assert.equals(0, countOf(calls, 'space'))
+    scene.keypressed(state, 'b')
+    P, calls = recorder()
+    scene.paint(state, P)
+    assert.equals(1, countOf(calls, 'space'))
+  end)
+end)
+
 describe('demo scenes: R', function()
-  for _, name in ipairs({ 'Shape pairs', 'Terrain', 'Stress' }) do
+  for _, name in ipairs({ 'Shape pairs', 'Terrain', 'Stress', 'Platformer' }) do
     it(('resets %s in place to its initial state, keeping the clock main.lua set'):format(name), function()
       local scene = sceneNamed(name)
       local state = scene.new(S, W, H)

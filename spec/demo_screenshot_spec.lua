@@ -2,7 +2,8 @@
 -- plain Lua; with STRIKE_SCREENSHOTS set, the screenshots that tools/screenshots.sh made
 -- there (scene1.png ...) must show each probe's colour. A screenshot shows a scene's
 -- scripted frame: its initial state, advanced by the scene's SHOT_FRAMES updates when it
--- has them (demo/util/scene.lua, shot; the stress scene: a frame with bodies in contact).
+-- has them (demo/util/scene.lua, shot; the stress scene: a frame with bodies in contact; the
+-- platformer: the character halfway up a slope, bullets stopped at every wall).
 --
 --   bash tools/screenshots.sh /tmp/shots && STRIKE_SCREENSHOTS=/tmp/shots make spec
 --
@@ -30,7 +31,7 @@ end
 
 describe('the demo scenes, in plain Lua', function()
   it('are listed in order, each with a name, help lines and the functions main.lua calls', function()
-    assert.is_true(#scenes >= 5)
+    assert.is_true(#scenes >= 6)
     for n, scene in ipairs(scenes) do
       local where = ('scene %d'):format(n)
       assert.equals('string', type(scene.name), where)
@@ -39,9 +40,13 @@ describe('the demo scenes, in plain Lua', function()
         assert.equals('function', type(scene[f]), where .. ': ' .. f)
       end
       -- the help panel is 420 px wide; LÖVE's default font is about 7 px a character
-      for _, line in ipairs(layout.helpLines(scenes, n)) do
+      local lines = layout.helpLines(scenes, n)
+      for _, line in ipairs(lines) do
         assert.is_true(#line <= 56, where .. ': help line too long: ' .. line)
       end
+      -- the panel (what the probes keep clear of) holds exactly these lines
+      local _, _, _, h = layout.helpRect(scene)
+      assert.equals(#lines * layout.LINE_HEIGHT + 10, h, where)
     end
   end)
 
@@ -128,6 +133,49 @@ describe('the stress scene\'s scripted frame', function()
     assert.is_true(colliding >= 1, 'no probe in a colliding body')
     assert.is_true(flashing >= 1, 'no probe in a flashing body')
   end)
+end)
+
+describe('the platformer scene\'s scripted frame', function()
+  local scene
+  for _, s in ipairs(scenes) do
+    if s.name == 'Platformer' then scene = s end
+  end
+
+  it('shows the character mid-level and bullets stopped at every wall, with probes a frame-0 picture fails',
+    function()
+      assert.is_true((scene.SHOT_FRAMES or 0) > 0)
+      local start = scene.new(S, W, H)
+      local state = sceneUtil.shot(scene, S, W, H)
+      assert.equals(scene.SHOT_FRAMES, state.stats.steps)
+      -- the character: over the one-way platform, and now on the ground halfway up the slope
+      local x0 = start.character:getCentroid()
+      local x, y = state.character:getCentroid()
+      assert.is_true(x - x0 > 200, 'not mid-level')
+      assert.is_true(state.touched['one-way platform'])
+      assert.is_true(state.grounded)
+      assert.equals('slope 26.6°', state.names[state.ground])
+      assert.matches(('^character at %%(%.0f, %.0f%%), on ground: yes %%(slope 26%%.6°%%)'):format(x, y),
+        scene.status(state)[1])
+      -- a probe inside the character where it is now, outside where it starts: a picture of
+      -- frame 0 shows background or level there
+      local found = false
+      for _, p in ipairs(scene.probes(state)) do
+        if p.what == 'character' then
+          found = true
+          assert.is_true(state.character:containsPoint(p.x + 0.5, p.y + 0.5))
+          assert.is_false(start.character:containsPoint(p.x + 0.5, p.y + 0.5))
+        end
+      end
+      assert.is_true(found, 'no probe in the character')
+      -- bullets: stopped at every wall, one in flight, none passed
+      local st = state.stats
+      assert.is_true(st.stopped > 0 and st.inFlight > 0)
+      assert.equals(0, st.passed)
+      local stopped = {}
+      for _, b in ipairs(state.bullets) do if b.hold then stopped[b.lane] = true end end
+      for lane = 1, #scene.LANES do assert.is_true(stopped[lane], 'no bullet stopped in lane ' .. lane) end
+      assert.matches(('bullets stopped: %d, passed: 0$'):format(st.stopped), scene.status(state)[2])
+    end)
 end)
 
 describe('the demo screenshots', function()

@@ -1,4 +1,5 @@
--- The headless demo (examples/demo.lua, `make demo`): its report and its SVG picture.
+-- The headless demo (examples/demo.lua, `make demo`): its report and its SVG picture, and its
+-- line on space:move from the LÖVE demo's Platformer scene.
 local demo = require('examples.demo')
 
 local function read(path)
@@ -118,6 +119,35 @@ describe('the headless demo', function()
       best.ny)
     assert.is_truthy(report:find(line, 1, true), 'expected the line: ' .. line)
   end)
+
+  it('reports space:move in the Platformer scene: where the character got to and the bullets, none passed',
+    function()
+      local S = require('strike')
+      local platformer = require('demo.scenes.platformer')
+      local lines = {}
+      local path = os.tmpname()
+      finally(function() os.remove(path) end)
+      local summary = demo.run(path, function(s) lines[#lines + 1] = s end)
+      local report = table.concat(lines)
+      -- the scene itself, driven as LÖVE drives it: one update of 1/60 s per step
+      local state = platformer.new(S, 800, 600)
+      for _ = 1, demo.MOTION_STEPS do platformer.update(state, 1 / 60) end
+      local x, y = state.character:getCentroid()
+      local st = state.stats
+      local surfaces = 0
+      for _ in pairs(state.touched) do surfaces = surfaces + 1 end
+      local m = summary.motion
+      assert.same({ x = x, y = y, ground = state.grounded and state.names[state.ground] or nil, surfaces = surfaces,
+        fired = st.fired, stopped = st.stopped, passed = st.passed }, m)
+      assert.equals(0, m.passed)
+      assert.is_true(m.stopped > 0 and m.fired >= m.stopped)
+      assert.is_true(state.touched['one-way platform'] and state.touched['slope 45°'] and state.touched['step 6'])
+      local line = ('space:move in the demo\'s Platformer scene, %d steps of 1/60 s: the character at (%.1f, %.1f),'
+        .. ' on the ground: %s, stood on %d surfaces (tiles, slopes, steps, the one-way platform); bullets at 400 px'
+        .. ' a step: %d fired, %d stopped at a wall, 0 passed\n'):format(demo.MOTION_STEPS, x, y,
+        m.ground and 'yes (' .. m.ground .. ')' or 'no', surfaces, st.fired, st.stopped)
+      assert.is_truthy(report:find(line, 1, true), 'expected the line: ' .. line)
+    end)
 
   it('the well-formedness check catches broken markup', function()
     assert.is_false((wellFormed('<svg><g></svg>')))

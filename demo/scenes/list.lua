@@ -27,5 +27,6 @@ return {
   require(ROOT .. 'rays'),
   require(ROOT .. 'concave'),
   require(ROOT .. 'terrain'),
-  (require(ROOT .. 'stress')), -- (parenthesised: Lua 5.4's require returns a second value)
+  require(ROOT .. 'stress'),
+  (require(ROOT .. 'platformer')), -- (parenthesised: Lua 5.4's require returns a second value)
 }

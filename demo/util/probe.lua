@@ -50,6 +50,52 @@ local function ring(self, x, y, radius, r)
     minx = x - e, miny = y - e, maxx = x + e, maxy = y + e })
 end
 
+-- A rounded shape's core: its vertices (x1, y1, ...), their count and, for a core with
+-- an area, its faces as (nx, ny, c) with n . p <= c inside.
+local function coreOf(s)
+  local core, n = {}, s:getVertexCount()
+  for i = 1, n do core[2 * i - 1], core[2 * i] = s:getVertex(i) end
+  local faces
+  if n >= 3 then
+    faces = {}
+    for i, x1, y1 in s:ipairs() do
+      local nx, ny = s:getNormal(i)
+      faces[i] = { nx, ny, nx * x1 + ny * y1 }
+    end
+  end
+  return core, n, faces
+end
+
+-- Distance from a point to a rounded shape's core (a point, a segment or a convex polygon;
+-- negative inside a polygon): exact, so that its rounding minus it is the distance to the
+-- shape's boundary as strike draws it (the core's faces moved out, joined by arcs).
+local function coreDistance(core, n, faces, px, py)
+  if n == 1 then return sqrt((px - core[1]) ^ 2 + (py - core[2]) ^ 2) end
+  local best = huge
+  for i = 1, n == 2 and 1 or n do
+    local j = i % n + 1
+    local d = segmentDistance(px, py, core[2 * i - 1], core[2 * i], core[2 * j - 1], core[2 * j])
+    if d < best then best = d end
+  end
+  if faces then
+    for i = 1, #faces do
+      local f = faces[i]
+      if f[1] * px + f[2] * py > f[3] then return best end
+    end
+    return -best
+  end
+  return best
+end
+
+-- A rounded shape's outline (arcs about its core's vertices, joined by its faces moved out),
+-- r its half thickness.
+local function roundedLine(self, s, r)
+  local core, n, faces = coreOf(s)
+  local minx, miny, maxx, maxy = s:getBounds()
+  return addMark(self, { kind = 'rounded', core = core, n = n, faces = faces, radius = s:getRounding(), r = r,
+    minx = minx - r, miny = miny - r, maxx = maxx + r, maxy = maxy + r })
+end
+
 --- Keep probes out of a rectangle (an overlay panel, text).
 function Model:reserve(x, y, w, h)
   return addMark(self, { kind = 'rect', minx = x, miny = y, maxx = x + w, maxy = y + h })
@@ -61,6 +107,7 @@ local function markDistance(m, px, py)
   if k == 'seg' then return segmentDistance(px, py, m.x1, m.y1, m.x2, m.y2) - m.r end
   if k == 'disc' then return sqrt((px - m.x) ^ 2 + (py - m.y) ^ 2) - m.r end
   if k == 'ring' then return math.abs(sqrt((px - m.x) ^ 2 + (py - m.y) ^ 2) - m.radius) - m.r end
+  if k == 'rounded' then return math.abs(coreDistance(m.core, m.n, m.faces, px, py) - m.radius) - m.r end
   -- rect: distance outside, negative inside
   local dx = max(m.minx - px, px - m.maxx)
   local dy = max(m.miny - py, py - m.maxy)
@@ -76,12 +123,16 @@ local function eachLeaf(body, fn)
   end
 end
 
--- A fill's signed distance data: a circle's centre and radius, or a convex polygon's faces
--- as (nx, ny, c) with n . p <= c inside.
+-- A fill's signed distance data: a circle's centre and radius, a rounded shape's core and
+-- rounding (a capsule: a segment), or a convex polygon's faces as (nx, ny, c) with
+-- n . p <= c inside.
 local function fillRecord(s, rgb, label, order)
   local f = { rgb = rgb, label = label, order = order, shape = s }
   f.minx, f.miny, f.maxx, f.maxy = s:getBounds()
-  if s.kind == 'circle' then
+  if s.kind == 'rounded' then
+    f.core, f.n, f.coreFaces = coreOf(s)
+    f.rounding = s:getRounding()
+  elseif s.kind == 'circle' then
     f.cx, f.cy = s:getCentroid()
     f.radius = s:getRadius()
   else
@@ -98,6 +149,7 @@ end
 --- Signed distance from a point to a fill's boundary: > 0 inside. Outside, it is a lower
 --- bound of the distance (the largest face separation), which is what keeping clear needs.
 local function fillDistance(f, px, py)
+  if f.rounding then return f.rounding - coreDistance(f.core, f.n, f.coreFaces, px, py) end
   if f.radius then return f.radius - sqrt((px - f.cx) ^ 2 + (py - f.cy) ^ 2) end
   local worst = -huge
   for i = 1, #f.faces do
@@ -108,10 +160,13 @@ local function fillDistance(f, px, py)
   return -worst
 end
 
---- Painter method: fill a body. Edges become 3-px lines, points dots; areas become fills.
+--- Painter method: fill a body. Edges become 3-px lines, points dots; areas (rounded shapes
+--- such as capsules included) become fills.
 function Model:fill(body, rgb, label)
   eachLeaf(body, function(s)
-    if s.kind == 'circle' and s:getRadius() == 0 then
+    if s.kind == 'rounded' then
+      self.fills[#self.fills + 1] = fillRecord(s, rgb, label, #self.fills + 1)
+    elseif s.kind == 'circle' and s:getRadius() == 0 then
       local x, y = s:getCentroid()
       disc(self, x, y, 2)
     elseif s.kind ~= 'circle' and s:getVertexCount() == 2 then
@@ -126,7 +181,9 @@ end
 --- Painter method: outline a body (1 px).
 function Model:outline(body)
   eachLeaf(body, function(s)
-    if s.kind == 'circle' then
+    if s.kind == 'rounded' then
+      roundedLine(self, s, 1)
+    elseif s.kind == 'circle' then
       local x, y = s:getCentroid()
       ring(self, x, y, s:getRadius(), 1)
     else
@@ -172,9 +229,11 @@ function Model:norms(body, len)
         segment(self, x + nx * r, y + ny * r, x + nx * (r + len), y + ny * (r + len), 1)
       end
     else
+      -- (a rounded shape's normals start on its boundary: its core's faces moved out)
+      local r = s.kind == 'rounded' and s:getRounding() or 0
       for i, x1, y1, x2, y2 in s:ipairs() do
         local nx, ny = s:getNormal(i)
-        local mx, my = (x1 + x2) / 2, (y1 + y2) / 2
+        local mx, my = (x1 + x2) / 2 + nx * r, (y1 + y2) / 2 + ny * r
         segment(self, mx, my, mx + nx * len, my + ny * len, 1)
       end
     end
