@@ -455,6 +455,30 @@ describe('S.pace motion', function()
       end
     end)
 
+    it('a one-way platform (a chain segment) lets a jump through from below, or fall back', function()
+      -- the platform y = 100 from x = 0 to 200 (solid from above), a floor at y = 240 below.
+      -- A capsule 44 tall jumping at 300 px/s under 1500 px/s^2 rises 30 px: its centroid
+      -- passes the platform but not its feet; it falls back onto the floor (centroid 218). A
+      -- jump at 600 px/s rises 120 px: it clears the platform and lands on it (centroid 78).
+      -- (the same for a box 20 x 44)
+      for _, jump in ipairs({ { 300, 218, H.Capsule }, { 600, 78, H.Capsule }, { 300, 218, H.Rectangle },
+        { 600, 78, H.Rectangle } }) do
+        local sp = S.pace()
+        sp:add(T.Chain(0, 100, 200, 100))
+        sp:add(H.Rectangle(100, 250, 400, 20))
+        local c = sp:add(jump[3](100, 125, 20, 44))
+        local vy = -jump[1]
+        for _ = 1, 120 do
+          vy = vy + 25
+          local x, y = c:getCentroid()
+          local _, _, cols, n = sp:move(c, x, y + vy / 60, nil, { slope = rad(50), snap = 4 })
+          for i = 1, n do if cols[i].ny < -0.7 then vy = 0 end end
+        end
+        local _, y = c:getCentroid()
+        near(y, jump[2], 1e-3)
+      end
+    end)
+
     it('with `step` a box climbs a ledge up to that high, and no higher', function()
       local function run(step, height)
         local sp = S.pace()

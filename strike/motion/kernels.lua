@@ -50,7 +50,9 @@
 --- along (chain.admissible: its own normal, or within a convex corner's cone); at a corner
 --- of a sharp pair, an end's direction is replaced by the neighbour's normal at a convex
 --- corner and left to the neighbour at a flat or concave one. Ghost vertices then make a
---- chain as smooth to a sweep as to the narrow phase. Two chain segments never meet.
+--- chain as smooth to a sweep as to the narrow phase. A leaf already partly through a
+--- segment at the start passes on (a one-way platform jumped into from below). Two chain
+--- segments never meet.
 local ROOT = (...):match('^(.-)%.motion%.[^%.]+$')
 local layout = require(ROOT .. '.base.layout')
 local admissible = require(ROOT .. '.collide.chain').admissible
@@ -379,6 +381,7 @@ local function sharpToi(A, B, dx, dy, tol)
   if dead or bclass == 0 or not (lo < hi) or not (hi > 0) or not (lo <= 1) then return false end
   local ux, uy = bux, buy
   if B.kind == 'chain' then -- a chain segment: its own normal, or a convex corner's cone
+    if lo < -tieT then return false end -- (partly through it already: it lets A pass)
     if bclass == 1 then
       if btag ~= P1 then return false end -- its back face
     elseif bclass == 3 then

@@ -102,6 +102,9 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
       if p then
         local m = collide(b, other, mtv)
         local t, x, y, nx, ny, corner, overlapping
+        -- (a move partly through a chain segment passes on: a one-way platform it jumped into
+        -- from below lets it through, or fall back, instead of holding it there)
+        if m and away and (m.collidedShape.kind == 'chain' or m.colliderShape.kind == 'chain') then m = false end
         if m then
           if not away or dx * m.nx + dy * m.ny > 0 then
             overlapHit(m, hitScratch)
