@@ -378,25 +378,32 @@ describe('S.pace motion', function()
       near(h.ny, -1)
     end)
 
-    it('a box walks along a chain with bumps at its full speed across', function()
-      local sp = S.pace()
-      local pts = {}
-      for i = 0, 60 do
-        pts[#pts + 1] = i * 10
-        pts[#pts + 1] = 100 + ((i % 4 == 1) and -2 or 0) -- small bumps, 11 degrees
-      end
-      sp:add(T.Chain(unpack(pts)))
-      local box = sp:add(H.Rectangle(20, 80, 10, 10))
-      local opts = { slope = rad(45), snap = 4 }
-      for f = 1, 150 do
-        local cx, cy = box:getCentroid()
-        local x, _, _, n = sp:move(box, cx + 3, cy + 1, nil, opts)
-        if f > 20 then
-          near(x - cx, 3, 1e-9, 'frame ' .. f)
-          assert(n > 0, 'frame ' .. f .. ': off the ground')
-        end
-      end
-    end)
+    for _, scale in ipairs({ 1, 1000 }) do
+      it(('a box and a capsule walk along a chain with bumps at their full speed across (scale %g)'):format(scale),
+        function()
+          for _, kind in ipairs({ 'box', 'capsule' }) do
+            local sp = S.pace()
+            local pts = {}
+            for i = 0, 60 do
+              pts[#pts + 1] = i * 10 * scale
+              pts[#pts + 1] = (100 + ((i % 4 == 1) and -2 or 0)) * scale -- small bumps, 11 degrees
+            end
+            sp:add(T.Chain(unpack(pts)))
+            local body = kind == 'box' and H.Rectangle(20 * scale, 80 * scale, 10 * scale, 10 * scale)
+              or H.Capsule(20 * scale, 70 * scale, 10 * scale, 30 * scale)
+            sp:add(body)
+            local opts = { slope = rad(45), snap = 4 * scale }
+            for f = 1, 150 do
+              local cx, cy = body:getCentroid()
+              local x, _, _, n = sp:move(body, cx + 3 * scale, cy + 1 * scale, nil, opts)
+              if f > 20 then
+                near(x - cx, 3 * scale, 1e-9 * scale, kind .. ' frame ' .. f)
+                assert(n > 0, kind .. ' frame ' .. f .. ': off the ground')
+              end
+            end
+          end
+        end)
+    end
   end)
 
   describe('characters', function()
