@@ -339,6 +339,9 @@ local coreDistance = kernels.coreDistance
 -- Where a hit is written: kernels.t, .nx, .ny (unit, from B toward A), .x, .y (the contact
 -- point at t), .corner (see the header).
 kernels.t, kernels.nx, kernels.ny, kernels.x, kernels.y, kernels.corner = 0, 0, 0, 0, 0, false
+-- kernels.overlap: whether the last toi found the leaves overlapping at the start, beyond the
+-- touching tolerance (a hit or not: the caller asks S.triking what to do).
+kernels.overlap = false
 
 -- The contact point of a sharp hit along (ux, uy) at t: the middle of the overlap of the
 -- two shapes' extreme features on the touching line.
@@ -377,6 +380,8 @@ local function sharpToi(A, B, dx, dy, tol)
   tieT = dl > 0 and tol / dl or 0
   lo, hi, dead, bclass, bcorner = -huge, huge, false, 0, false
   scan(A, B)
+  -- (overlapping at the start, beyond round-off: the caller's S.triking decides)
+  if not dead and lo < -tieT and hi > tieT and B.kind ~= 'chain' then kernels.overlap = true end
   -- luacheck: ignore 581 (NaN reads as no hit)
   if dead or bclass == 0 or not (lo < hi) or not (hi > 0) or not (lo <= 1) then return false end
   local ux, uy = bux, buy
@@ -484,7 +489,10 @@ local function roundToi(A, B, dx, dy, tol)
   local r, rB = A[R] + B[R], B[R]
   local chainSeg = B.kind == 'chain' and B or false
   local d, ax, ay, bx, by = coreDistance(A, B)
-  if d < r - tol then return false end -- (overlapping: the caller's S.triking decides)
+  if d < r - tol then -- (overlapping: the caller's S.triking decides)
+    kernels.overlap = B.kind ~= 'chain'
+    return false
+  end
   if d <= r + tol then -- touching at the start: a hit when the move goes in
     if not (d > 0) then return false end -- luacheck: ignore 581 (NaN reads as no hit)
     local nx, ny = (ax - bx) / d, (ay - by) / d
@@ -511,7 +519,8 @@ local function roundToi(A, B, dx, dy, tol)
 end
 
 --- The time of impact of leaf A moving by (dx, dy) against leaf B (see the header): false,
---- or true with the hit in kernels.t, .x, .y, .nx, .ny, .corner. `tol` is the touching
+--- or true with the hit in kernels.t, .x, .y, .nx, .ny, .corner; kernels.overlap tells
+--- whether they overlapped at the start (chain segments aside), when the answer is S.triking's. `tol` is the touching
 --- tolerance (TIE times scale).
 ---@param A table
 ---@param B table
@@ -520,6 +529,7 @@ end
 ---@param tol number
 ---@return boolean
 function kernels.toi(A, B, dx, dy, tol)
+  kernels.overlap = false
   local flip = A.kind == 'chain'
   if flip then
     if B.kind == 'chain' then return false end -- chain segments never meet

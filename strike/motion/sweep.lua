@@ -56,10 +56,18 @@ local one1, one2 = {}, {}
 
 -- A body's leaves (refreshed): a collider's list, or a bare shape in `one`.
 local function leavesOf(body, one)
-  local list, n
-  if body.shapes then list, n = leafList(body) else list, n = one, 1; one[1] = body end
+  -- (one leaf, the common case, without a loop: a collider's `_single`, its only leaf while
+  -- its list is current, else false; nil for a shape. LuaJIT traces one-trip loops badly.)
+  local s = body._single
+  if s == nil then s = body end
+  if s then
+    if s[DIRTY] then s:_refresh() end
+    one[1] = s
+    return one, 1
+  end
+  local list, n = leafList(body)
   for i = 1, n do
-    local s = list[i]
+    s = list[i]
     if s[DIRTY] then s:_refresh() end
   end
   return list, n
@@ -113,8 +121,9 @@ sweep.better = better
 -- Best hit of a translation so far.
 local ht, hx, hy, hnx, hny, hcorner, hadn = huge, 0, 0, 0, 0, false, huge
 
---- The earliest hit of body a's leaves moving by (dx, dy) against b's (the bodies do not
---- overlap): false, or true with the hit in sweep.t, .x, .y, .nx, .ny, .corner.
+--- The earliest hit of body a's leaves moving by (dx, dy) against b's: false, or true with
+--- the hit in sweep.t, .x, .y, .nx, .ny, .corner; sweep.overlap tells whether a pair of their
+--- leaves overlapped at the start (then the bodies' S.triking has the answer).
 ---@param la table
 ---@param na integer
 ---@param lb table
@@ -124,6 +133,7 @@ local ht, hx, hy, hnx, hny, hcorner, hadn = huge, 0, 0, 0, 0, false, huge
 ---@return boolean
 function sweep.translate(la, na, lb, nb, dx, dy)
   ht, hcorner, hadn = huge, false, huge
+  local overlap = false
   local dl = sqrt(dx * dx + dy * dy)
   for i = 1, na do
     local A = la[i]
@@ -133,7 +143,9 @@ function sweep.translate(la, na, lb, nb, dx, dy)
       if A[MINX] + (dx < 0 and dx or 0) <= B[MAXX] and A[MAXX] + (dx > 0 and dx or 0) >= B[MINX]
         and A[MINY] + (dy < 0 and dy or 0) <= B[MAXY] and A[MAXY] + (dy > 0 and dy or 0) >= B[MINY] then
         local tol = TIE * scale(A, B, dx, dy)
-        if toi(A, B, dx, dy, tol) then
+        local hit = toi(A, B, dx, dy, tol)
+        if kernels.overlap then overlap = true end
+        if hit then
           local t, nx, ny = kernels.t, kernels.nx, kernels.ny
           local adn = abs(dx * nx + dy * ny)
           if better(t, kernels.corner, adn, ht, hcorner, hadn, dl > 0 and tol / dl or 0) then
@@ -143,11 +155,14 @@ function sweep.translate(la, na, lb, nb, dx, dy)
       end
     end
   end
+  sweep.overlap = overlap
   if ht == huge then return false end
   sweep.t, sweep.x, sweep.y, sweep.nx, sweep.ny, sweep.corner = ht, hx, hy, hnx, hny, hcorner
   return true
 end
 sweep.t, sweep.x, sweep.y, sweep.nx, sweep.ny, sweep.corner = 0, 0, 0, 0, 0, false
+-- sweep.overlap: whether the last translate met a pair of leaves overlapping at the start.
+sweep.overlap = false
 
 ------------------------------------------------------------------ rotation
 

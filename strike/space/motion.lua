@@ -100,22 +100,41 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
       end
       local p = bx0 <= x1 and bx1 >= x0 and by0 <= y1 and by1 >= y0 and pick(ctx, other, id)
       if p then
-        local m = collide(b, other, mtv)
         local t, x, y, nx, ny, corner, overlapping
-        -- (a move partly through a chain segment passes on: a one-way platform it jumped into
-        -- from below lets it through, or fall back, instead of holding it there)
-        if m and away and (m.collidedShape.kind == 'chain' or m.colliderShape.kind == 'chain') then m = false end
-        if m then
-          if not away or dx * m.nx + dy * m.ny > 0 then
+        if away then
+          -- A move: the sweep first, and S.triking only for a body it found overlapping at the
+          -- start. (A body partly through a chain segment passes on: a one-way platform it
+          -- jumped into from below lets it through, or fall back, instead of holding it.)
+          local lb, nb = leavesOf(other, one2)
+          if na > 0 and nb > 0 then
+            if translate(la, na, lb, nb, dx, dy) then
+              t, x, y, nx, ny, corner, overlapping = sweep.t, sweep.x, sweep.y, sweep.nx, sweep.ny, sweep.corner,
+                false
+            end
+            if sweep.overlap then
+              local m = collide(b, other, mtv)
+              if m and m.collidedShape.kind ~= 'chain' and m.colliderShape.kind ~= 'chain' then
+                t = nil
+                if dx * m.nx + dy * m.ny > 0 then -- (only when the move goes further in)
+                  overlapHit(m, hitScratch)
+                  t, x, y, nx, ny, corner, overlapping = 0, hitScratch.x, hitScratch.y, hitScratch.nx, hitScratch.ny,
+                    false, true
+                end
+              end
+            end
+          end
+        else -- a cast: S.weep's answer
+          local m = collide(b, other, mtv)
+          if m then
             overlapHit(m, hitScratch)
             t, x, y, nx, ny, corner, overlapping = 0, hitScratch.x, hitScratch.y, hitScratch.nx, hitScratch.ny,
               false, true
-          end
-        elseif na > 0 then
-          local lb, nb = leavesOf(other, one2)
-          if nb > 0 and translate(la, na, lb, nb, dx, dy) then
-            t, x, y, nx, ny, corner, overlapping = sweep.t, sweep.x, sweep.y, sweep.nx, sweep.ny, sweep.corner,
-              false
+          elseif na > 0 then
+            local lb, nb = leavesOf(other, one2)
+            if nb > 0 and translate(la, na, lb, nb, dx, dy) then
+              t, x, y, nx, ny, corner, overlapping = sweep.t, sweep.x, sweep.y, sweep.nx, sweep.ny, sweep.corner,
+                false
+            end
           end
         end
         if t then
