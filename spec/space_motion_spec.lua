@@ -243,6 +243,32 @@ describe('S.pace motion', function()
       assert.is_false(S.triking(box, wall))
     end)
 
+    it('meets a body it starts in only when the move goes further in', function()
+      -- the box spans x [-5, 5] and the wall x [3, 13] (3 deep, MTV along x): moving right goes
+      -- further in: an overlapping collision at t = 0, normal (-1, 0), and the slide keeps only
+      -- the motion along y; moving left (out) or along y meets nothing
+      local sp = S.pace()
+      local wall = sp:add(H.Rectangle(8, 0, 10, 100))
+      local box = sp:add(H.Rectangle(0, 0, 10, 10))
+      local x, y, cols, n = sp:move(box, 10, 4)
+      assert.equal(1, n)
+      assert.equal(wall, cols[1].other)
+      assert.is_true(cols[1].overlapping)
+      assert.equal(0, cols[1].t)
+      near(cols[1].nx, -1)
+      near(x, 0)
+      near(y, 4)
+      local x2, y2, _, n2 = sp:move(box, -10, 4)
+      assert.equal(0, n2)
+      near(x2, -10)
+      near(y2, 4)
+      box:translateTo(0, 0)
+      local x3, y3, _, n3 = sp:move(box, 0, 20)
+      assert.equal(0, n3)
+      near(x3, 0)
+      near(y3, 20)
+    end)
+
     it('sees bodies moved, added or removed between moves (its candidates are kept only while none is)',
       function()
         local sp = S.pace()
