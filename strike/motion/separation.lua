@@ -13,12 +13,12 @@ local sweep = require(ROOT .. '.motion.sweep')
 local layout = require(ROOT .. '.base.layout')
 local compound = require(ROOT .. '.collide.compound')
 local MTV = require(ROOT .. '.collide.MTV')
-local args = require(ROOT .. '.collide.args')
 
 local R = layout.R
-local coreDistance, support, leavesOf = kernels.coreDistance, kernels.support, sweep.leavesOf
+local coreDistance, support, leavesOf, checkBody = kernels.coreDistance, kernels.support, sweep.leavesOf,
+  sweep.checkBody
 local collide = compound.collide
-local sqrt, huge, type = math.sqrt, math.huge, type
+local sqrt, huge = math.sqrt, math.huge
 
 local separation = {}
 
@@ -26,12 +26,6 @@ local mtv = MTV()
 local one1, one2 = {}, {}
 local FNAME = 'strike.eparation'
 
-local function body(v, i)
-  if type(v) ~= 'table' or not (v.type == 'shape' and args.isShape(v) or v.type == 'collider'
-    and args.isCollider(v)) then
-    args.badBody(FNAME, i, v)
-  end
-end
 
 --- The distance between two bodies (minus the depth when they overlap) and the closest
 --- points on a and on b (see the header).
@@ -43,8 +37,8 @@ end
 ---@return number bx
 ---@return number by
 function separation.eparation(a, b)
-  body(a, 1)
-  body(b, 2)
+  checkBody(FNAME, a, 1)
+  checkBody(FNAME, b, 2)
   local m = collide(a, b, mtv)
   if m then
     local nx, ny = m.nx, m.ny

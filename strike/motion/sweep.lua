@@ -301,12 +301,18 @@ end
 
 local FNAME = 'strike.weep'
 
-local function body(v, i)
+--- Raise the error for argument `i` of `fname` at the caller's line unless `v` is a body (a
+--- strike shape or collider).
+---@param fname string
+---@param v any
+---@param i integer
+function sweep.checkBody(fname, v, i)
   if type(v) ~= 'table' or not (v.type == 'shape' and args.isShape(v) or v.type == 'collider'
     and args.isCollider(v)) then
-    args.badBody(FNAME, i, v)
+    args.badBody(fname, i, v)
   end
 end
+local checkBody = sweep.checkBody
 
 --- Sweep body a by (dx, dy) (turning by `angle` about its centroid, linearly with t) against
 --- body b, which stays: false when they never touch, else the hit (see the header), filled
@@ -319,12 +325,12 @@ end
 ---@param out table|nil
 ---@return table|false
 function sweep.weep(a, dx, dy, b, angle, out)
-  body(a, 1)
+  checkBody(FNAME, a, 1)
   if not (finite(dx) and finite(dy)) then
     check.number(dx, FNAME, 'argument 2 (dx)')
     check.number(dy, FNAME, 'argument 3 (dy)')
   end
-  body(b, 4)
+  checkBody(FNAME, b, 4)
   if angle ~= nil and not finite(angle) then
     fail(('%s: argument 5 (angle) must be a finite number or nil, got %s'):format(FNAME, describe(angle)))
   end

@@ -155,17 +155,18 @@ end
 
 ------------------------------------------------------------------ cast
 
+-- The pair rules between the body a query moves (its id sid, in this space) and body id.
+local function pairAllowed(self, sid, id)
+  if self._rank[sid] < self._rank[id] then return allowed(self, sid, id) end
+  return allowed(self, id, sid)
+end
+
 -- cast's rule for a candidate: the query filter, and the pair rules for a body in the space.
 local function castPick(level, other, id)
   local self = level.space
   if not queryFilter(level.filter, other, self._layer[id]) then return false end
   local sid = level.sid
-  if sid then
-    local rank = self._rank
-    if rank[sid] < rank[id] then return allowed(self, sid, id) end
-    return allowed(self, id, sid)
-  end
-  return true
+  return not sid or pairAllowed(self, sid, id)
 end
 
 local function number(fname, v, i, name)
@@ -272,22 +273,21 @@ function Space:addResponse(name, fn)
   own[name] = fn
 end
 
--- move's rule for a candidate: not met yet in this move, the pair rules, and the filter's
--- response (default 'slide').
-local function movePick(level, other, id)
-  if level.visited[other] then return false end
-  local self = level.space
-  local sid, rank = level.sid, self._rank
-  if rank[sid] < rank[id] then
-    if not allowed(self, sid, id) then return false end
-  elseif not allowed(self, id, sid) then
-    return false
-  end
+-- move's response to body `other` (id): false when the pair rules forbid it or the filter
+-- says nil, else the filter's response name ('slide' without a filter).
+local function response(level, other, id)
+  if not pairAllowed(level.space, level.sid, id) then return false end
   local f = level.filter
   if not f then return 'slide' end
   local name = f(level.body, other)
   if name == nil or name == false then return false end
   return name
+end
+
+-- move's rule for a candidate: not met already (see the header), and its response.
+local function movePick(level, other, id)
+  if level.visited[other] then return false end
+  return response(level, other, id)
 end
 
 -- The record for the k-th collision of a move: the list's own, or one kept from a longer
@@ -373,17 +373,8 @@ end
 -- move's rule for the extra casts of a step and a snap: every body the body would not
 -- pass through (a response other than 'cross'), met before in this move or not.
 local function solidPick(level, other, id)
-  local self = level.space
-  local sid, rank = level.sid, self._rank
-  if rank[sid] < rank[id] then
-    if not allowed(self, sid, id) then return false end
-  elseif not allowed(self, id, sid) then
-    return false
-  end
-  local f = level.filter
-  if not f then return 'slide' end
-  local name = f(level.body, other)
-  if name == nil or name == false or name == 'cross' then return false end
+  local name = response(level, other, id)
+  if name == 'cross' then return false end
   return name
 end
 
