@@ -293,6 +293,28 @@ describe('S.pace motion', function()
         near(box:getCentroid(), 15, 1e-4)
       end)
 
+    it('two bodies moved in turn meet each other (each one\'s moves keep the candidates)', function()
+      -- a at x = 0 and b at x = 40, 10 wide: each moves 3 toward the other in turn, a first.
+      -- After 5 turns each (a at 15, b at 25) their faces touch at x = 20; from then on each
+      -- move meets the other and stops a skin short: they never overlap.
+      local sp = S.pace()
+      local a = sp:add(H.Rectangle(0, 0, 10, 10))
+      local b = sp:add(H.Rectangle(40, 0, 10, 10))
+      local met = 0
+      for _ = 1, 10 do
+        local ax, ay = a:getCentroid()
+        local _, _, cols, n = sp:move(a, ax + 3, ay)
+        if n > 0 and cols[1].other == b then met = met + 1 end
+        assert.is_false(S.triking(a, b))
+        local bx, by = b:getCentroid()
+        _, _, cols, n = sp:move(b, bx - 3, by)
+        if n > 0 and cols[1].other == a then met = met + 1 end
+        assert.is_false(S.triking(a, b))
+      end
+      assert(met >= 10, 'met ' .. met)
+      near(b:getCentroid() - a:getCentroid(), 10, 1e-4)
+    end)
+
     it('moves a sensor straight to its goal, and nothing stops at a sensor', function()
       local sp = S.pace()
       sp:add(H.Rectangle(50, 0, 10, 200), { sensor = true })
