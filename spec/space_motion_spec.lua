@@ -315,6 +315,42 @@ describe('S.pace motion', function()
       near(b:getCentroid() - a:getCentroid(), 10, 1e-4)
     end)
 
+    it('gives the same answers when its filter casts, sweeps and moves other bodies meanwhile', function()
+      -- a box walking right with `step` into a ledge it climbs, on a floor; a filter that, at
+      -- every candidate, casts and moves a far body (with other options) and runs S.weep
+      local function run(nested)
+        local sp = S.pace()
+        sp:add(H.Rectangle(0, 110, 400, 20))
+        sp:add(H.Rectangle(300, 95, 200, 10))
+        local far = sp:add(H.Circle(5000, 5000, 3))
+        sp:add(H.Rectangle(5050, 5000, 10, 100))
+        local box = sp:add(H.Rectangle(100, 89, 20, 20))
+        local out = {}
+        local filter = nested and function()
+          sp:cast(far, 100, 0, nil, out)
+          local fx, fy = far:getCentroid()
+          sp:move(far, fx + 60, fy + 3, nil, { slope = 0.1, snap = 1 })
+          far:translateTo(5000, 5000)
+          S.weep(far, 100, 0, box)
+          return 'slide'
+        end or nil
+        local trace = {}
+        for _ = 1, 50 do
+          local cx, cy = box:getCentroid()
+          local x, y, cols, n = sp:move(box, cx + 3, cy + 1, filter, { step = 12, snap = 4 })
+          trace[#trace + 1] = ('%.12g %.12g %d'):format(x, y, n)
+          for i = 1, n do trace[#trace + 1] = ('%.12g %.12g'):format(cols[i].nx, cols[i].ny) end
+        end
+        return table.concat(trace, '\n'), box
+      end
+      local plain, box1 = run(false)
+      local nested = run(true)
+      assert.equal(plain, nested)
+      local x, y = box1:getCentroid()
+      near(x, 250, 1e-3) -- (150 across, over the ledge from x = 200: on top, y = 80)
+      near(y, 80, 1e-3)
+    end)
+
     it('moves a sensor straight to its goal, and nothing stops at a sensor', function()
       local sp = S.pace()
       sp:add(H.Rectangle(50, 0, 10, 200), { sensor = true })

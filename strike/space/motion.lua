@@ -50,7 +50,6 @@ local allowed, isSpace, checkBody, idOf = private.allowed, private.isSpace, priv
 Space.SKIN = 1e-6
 
 local mtv = MTV()
-local one1, one2 = {}, {}
 local hitScratch = {}
 
 -- The first body the body `b` (id `self_id` when in this space, else false) hits moving by
@@ -81,6 +80,12 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
     ids = level.ids
   end
   local bodies, sensor = self._body, self._sensor
+  -- (one-leaf lists of the level's own: a filter may sweep another body meanwhile)
+  local one1, one2 = level.one1, level.one2
+  if not one1 then
+    one1, one2 = {}, {}
+    level.one1, level.one2 = one1, one2
+  end
   local la, na = leavesOf(b, one1)
   local found, bt, bcorner, badn = false, huge, false, huge
   local dl = sqrt(dx * dx + dy * dy)
@@ -378,22 +383,27 @@ local function solidPick(level, other, id)
   return name
 end
 
-local probe = {}
-
 -- Cast the body by (dx, dy) against solid bodies and move it as far as it goes, SKIN short:
--- the fraction moved, and the hit (in `probe`) or false.
+-- the fraction moved, and whether it hit something, with the normal there. (The hit goes in
+-- the level's own table: a filter may move another body meanwhile.)
 local function advance(self, level, body, sid, dx, dy, skin)
+  local probe = level.stepHit
+  if not probe then
+    probe = {}
+    level.stepHit = probe
+  end
   local h = first(self, level, body, sid, dx, dy, solidPick, level, true, probe)
-  local ts = 1
+  local ts, nx, ny = 1, 0, 0
   if h then
-    local dn = -(dx * probe.nx + dy * probe.ny)
+    nx, ny = probe.nx, probe.ny
+    local dn = -(dx * nx + dy * ny)
     ts = probe.t
     if probe.overlapping then ts = 0 elseif dn > 0 then ts = ts - skin / dn end
     if ts < 0 then ts = 0 end
     probe.body, probe.pick = nil, nil
   end
   if ts > 0 then body:translate(ts * dx, ts * dy) end
-  return ts, h
+  return ts, h, nx, ny
 end
 
 -- Try to step up a ledge at most stepH high while moving across `up` by (hx, hy): up, across,
@@ -406,8 +416,8 @@ local function stepUp(self, level, body, sid, hx, hy, skin)
     local th = advance(self, level, body, sid, hx, hy, skin)
     if th > 0 then
       local up = tu * stepH
-      local td, h = advance(self, level, body, sid, -upX * up, -upY * up, skin)
-      if h and td < 1 and walkable(probe.nx, probe.ny) then return true end
+      local td, h, nx, ny = advance(self, level, body, sid, -upX * up, -upY * up, skin)
+      if h and td < 1 and walkable(nx, ny) then return true end
     end
   end
   local x, y = body:getCentroid()
@@ -449,6 +459,9 @@ function Space:move(body, goalX, goalY, filterFn, opts)
     fail(('%s: argument 4 (filter) must be a function (body, other) -> response name or nil, got %s'):format(F,
       what(filterFn)))
   end
+  -- (the options of a move run from a filter of this one are its own: the outer ones come
+  -- back when it returns)
+  local oUpX, oUpY, oWalkCos, oSnapH, oStepH = upX, upY, walkCos, snapH, stepH
   readOptions(F, opts)
   local level = enter(self)
   -- The collision list of the depth this move runs at (one for moves at the top, another for
@@ -578,6 +591,7 @@ function Space:move(body, goalX, goalY, filterFn, opts)
     for i = 1, k do visited[cols[i].other] = nil end
   end
   local spare = cols.spare
+  upX, upY, walkCos, snapH, stepH = oUpX, oUpY, oWalkCos, oSnapH, oStepH
   for i = #cols, k + 1, -1 do -- (kept for a longer list later, without the body they named)
     local col = cols[i]
     col.other = false
