@@ -110,15 +110,6 @@ local function minMaxProj(s, k0, k1, ux, uy)
   return lo_, hi_
 end
 
-local function maxProj(s, k0, k1, ux, uy)
-  local m = -huge
-  for k = k0, k1, STRIDE do
-    local p = ux * s[k] + uy * s[k + VY]
-    if p > m then m = p end
-  end
-  return m
-end
-
 --- The size that tolerances are relative to: the largest coordinate magnitude of the two
 --- leaves' bounds, and the move.
 ---@param A table
@@ -182,12 +173,15 @@ local function segmentAxes(seg, k0, k1, other, o0, o1, onB)
   local l = sqrt(ex * ex + ey * ey)
   if not (l > 0) then return false end -- luacheck: ignore 581 (NaN reads as no hit)
   ex, ey = ex / l, ey / l
+  -- (h along e is B's greatest projection less A's least; along -e, A's greatest less B's least)
+  local slo, shi = minMaxProj(seg, k0, k1, ex, ey)
+  local olo, ohi = minMaxProj(other, o0, o1, ex, ey)
   if onB then
-    step(ex, ey, maxProj(seg, k0, k1, ex, ey) - minProj(other, o0, o1, ex, ey), 3, 2)
-    step(-ex, -ey, maxProj(seg, k0, k1, -ex, -ey) - minProj(other, o0, o1, -ex, -ey), 3, 1)
+    step(ex, ey, shi - olo, 3, 2)
+    step(-ex, -ey, ohi - slo, 3, 1)
   else
-    step(ex, ey, maxProj(other, o0, o1, ex, ey) - minProj(seg, k0, k1, ex, ey), 3, 0)
-    step(-ex, -ey, maxProj(other, o0, o1, -ex, -ey) - minProj(seg, k0, k1, -ex, -ey), 3, 0)
+    step(ex, ey, ohi - slo, 3, 0)
+    step(-ex, -ey, shi - olo, 3, 0)
   end
   return true
 end
@@ -232,10 +226,13 @@ local function scan(A, B)
   local pointA = na == 1 or (na == 2 and not segmentAxes(A, a0, a1, B, b0, b1, false))
   local pointB = nb == 1 or (nb == 2 and not segmentAxes(B, b0, b1, A, a0, a1, true))
   if pointA and pointB then
-    step(1, 0, maxProj(B, b0, b1, 1, 0) - minProj(A, a0, a1, 1, 0), 3, 0)
-    step(-1, 0, maxProj(B, b0, b1, -1, 0) - minProj(A, a0, a1, -1, 0), 3, 0)
-    step(0, 1, maxProj(B, b0, b1, 0, 1) - minProj(A, a0, a1, 0, 1), 3, 0)
-    step(0, -1, maxProj(B, b0, b1, 0, -1) - minProj(A, a0, a1, 0, -1), 3, 0)
+    for axis = 0, 1 do -- x, then y
+      local ux, uy = 1 - axis, axis
+      local alo, ahi = minMaxProj(A, a0, a1, ux, uy)
+      local blo, bhi = minMaxProj(B, b0, b1, ux, uy)
+      step(ux, uy, bhi - alo, 3, 0)
+      step(-ux, -uy, ahi - blo, 3, 0)
+    end
   end
 end
 
@@ -349,7 +346,7 @@ local function sharpPoint(A, B, t, dx, dy, ux, uy)
   local a0, a1 = span(A)
   local b0, b1 = span(B)
   local ox, oy = t * dx, t * dy
-  local line = maxProj(B, b0, b1, ux, uy)
+  local line = -minProj(B, b0, b1, -ux, -uy) -- (B's greatest projection)
   local mina = minProj(A, a0, a1, ux, uy) + ux * ox + uy * oy
   local tx, ty = -uy, ux
   local alo, ahi, blo, bhi = huge, -huge, huge, -huge

@@ -273,13 +273,14 @@ local function rotate(la, na, lb, nb, cx, cy, dx, dy, angle, out)
   end
   local target = sweep.ROTATION_TOL * (size + 2 * rho)
   local speed = sqrt(dx * dx + dy * dy) + abs(angle) * rho
-  local t = 0
-  for _ = 1, sweep.MAX_STEPS do
+  local t, last = 0, sweep.MAX_STEPS
+  for step = 0, last do
     local c, s = cos(angle * t), sin(angle * t)
     for i = 1, na do place(la[i], placed[i], cx, cy, c, s, t * dx, t * dy) end
     local d, ax, ay, bx, by, nx, ny = gap(na, lb, nb)
     if d == huge then return false end -- (no pair may meet)
-    if d <= target then
+    -- (touching, or out of steps: then t is still before the first touch)
+    if d <= target or step == last then
       if t == 0 then -- touching at the start: a hit only when a's touching point goes in
         local vx, vy = dx - angle * (ay - cy), dy + angle * (ax - cx)
         -- luacheck: ignore 581 (NaN reads as no hit)
@@ -290,11 +291,6 @@ local function rotate(la, na, lb, nb, cx, cy, dx, dy, angle, out)
     t = t + d / speed
     if t > 1 then return false end
   end
-  -- (not converged: t is still before the first touch)
-  local c, s = cos(angle * t), sin(angle * t)
-  for i = 1, na do place(la[i], placed[i], cx, cy, c, s, t * dx, t * dy) end
-  local _, ax, ay, bx, by, nx, ny = gap(na, lb, nb)
-  return rotHit(out, t, ax, ay, bx, by, nx, ny, dx, dy)
 end
 
 ------------------------------------------------------------------ S.weep

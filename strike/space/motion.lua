@@ -49,6 +49,9 @@ local allowed, isSpace, checkBody, idOf = private.allowed, private.isSpace, priv
 --- plus a rounding of its position (README, "Moving bodies").
 Space.SKIN = 1e-6
 
+-- The gap for a body of radius `size` at (x, y).
+local function skinAt(size, x, y) return Space.SKIN * size + 1e-9 * (abs(x) + abs(y)) end
+
 local mtv = MTV()
 local hitScratch = {}
 
@@ -174,12 +177,6 @@ local function castPick(level, other, id)
   return not sid or pairAllowed(self, sid, id)
 end
 
-local function number(fname, v, i, name)
-  if not finite(v) then
-    fail(('%s: argument %d (%s) must be a finite number, got %s'):format(fname, i, name, describe(v)))
-  end
-end
-
 --- The first body that `body` (in this space or not) would hit moving by (dx, dy): the hit
 --- of S.weep (`t`, `x`, `y`, `nx`, `ny`, `overlapping`) plus `body`, the body hit, filled
 --- into `out` when given; or false. Only bodies `filter` allows count (a function
@@ -197,8 +194,10 @@ function Space:cast(body, dx, dy, filterArg, out)
   local F = 'strike.Space:cast'
   if not isSpace(self) then badSelf(self, F) end
   checkBody(F, body, 1)
-  number(F, dx, 2, 'dx')
-  number(F, dy, 3, 'dy')
+  if not (finite(dx) and finite(dy)) then
+    check.number(dx, F, 'argument 2 (dx)')
+    check.number(dy, F, 'argument 3 (dy)')
+  end
   checkQuery(filterArg, F, 4)
   if out ~= nil and (type(out) ~= 'table' or getmetatable(out) ~= nil) then
     fail(('%s: argument 5 (out) must be a plain table for the hit (a previous hit, or {}), got %s'):format(F,
@@ -453,8 +452,10 @@ function Space:move(body, goalX, goalY, filterFn, opts)
   local F = 'strike.Space:move'
   if not isSpace(self) then badSelf(self, F) end
   local sid = idOf(self, F, body)
-  number(F, goalX, 2, 'goalX')
-  number(F, goalY, 3, 'goalY')
+  if not (finite(goalX) and finite(goalY)) then
+    check.number(goalX, F, 'argument 2 (goalX)')
+    check.number(goalY, F, 'argument 3 (goalY)')
+  end
   if filterFn ~= nil and type(filterFn) ~= 'function' then
     fail(('%s: argument 4 (filter) must be a function (body, other) -> response name or nil, got %s'):format(F,
       what(filterFn)))
@@ -514,7 +515,7 @@ function Space:move(body, goalX, goalY, filterFn, opts)
       end
       local t, nx, ny = hit.t, hit.nx, hit.ny
       -- stop short by SKIN along the normal, taken back along the leg (never before its start)
-      local skin = Space.SKIN * size + 1e-9 * (abs(x) + abs(y))
+      local skin = skinAt(size, x, y)
       local dn = -(dx * nx + dy * ny)
       local ts = t
       if dn > 0 and not hit.overlapping then
@@ -570,7 +571,7 @@ function Space:move(body, goalX, goalY, filterFn, opts)
       x, y, goalX, goalY = fx, fy, gx, gy
     end
     if snapH > 0 and not rising then -- snap down onto walkable ground
-      local skin = Space.SKIN * size + 1e-9 * (abs(x) + abs(y))
+      local skin = skinAt(size, x, y)
       if first(self, level, body, sid, -upX * snapH, -upY * snapH, solidPick, level, true, hit)
         and not hit.overlapping and walkable(hit.nx, hit.ny) then
         local ts = hit.t - skin / snapH
