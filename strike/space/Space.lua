@@ -64,32 +64,54 @@ function Space:new()
   -- the body a move is moving (_mover, its id; 0 when none), so that a move can keep its
   -- candidates while only it moves (strike/space/motion.lua)
   self._version, self._mover = 0, 0
+  -- the number of removals so far: a call whose game code (a filter, a callback) removed
+  -- bodies sees it change, and drops them from its results (see dropRemoved)
+  self._removals = 0
+  -- true while a call that runs game code is in progress at the top (see protect)
+  self._guard = false
   -- contact tracking: records by pair key, the touching records of the last call (in
   -- order) and of this one, and a pool of ended records
   self._active, self._prev, self._cur, self._pool, self._ended = {}, {}, {}, {}, {}
   self._nprev, self._frame = 0, 0
+  -- the records this call of collisions() made (undone when its pair filter raises)
+  self._fresh, self._nfresh = {}, 0
+  self._inCollisions = false
+  -- the events of the last collisions() still to run (see emitEvents): event _emE (0: none)
+  -- of _emN (the first _emNe end the pairs in _ended, the others are _prev's), from its
+  -- callback _emC, of kind _emKind, whose list had _emCount callbacks when it started;
+  -- _emR is the number of removals when they started
+  self._emE, self._emC, self._emN, self._emNe, self._emKind, self._emCount, self._emR = 0, 1, 0, 0, 'end', 0, 0
   self._scratch = MTV()
   self._on = { begin = {}, stay = {}, ['end'] = {} }
   self._listeners = 0
+  self._compact = false -- (a callback was removed while events were running: see off)
   self._pairFilter = false
 end
 
 -- A query begins: its scratch is the level for the depth it runs at, made on first use.
 -- A query started from a filter of another one (or from a callback) runs one level deeper,
--- so neither sees the other's candidates, ray or rectangle. Each query leaves with leave().
--- (An error raised by a filter leaves its level taken: later queries then run one level
--- deeper, with scratch of their own, and stay correct.)
+-- so neither sees the other's candidates, ray or rectangle. Each query leaves with
+-- leave(self, level), which puts the depth back to the level's own: a query that a game's
+-- filter ran, and whose error the filter caught, leaves its level taken, and the query
+-- that ran the filter then gives it back. A call at the top that runs game code is
+-- protected (protect): an error leaves every level free.
 local function enter(self)
   local d = self._depth + 1
   self._depth = d
   local level = self._levels[d]
   if not level then
     level = {
+      index = d,
       ids = {}, ts = {}, stack = {}, tstack = {}, -- candidates, their entry distances, the tree walk's
       probe = false, -- the rectangle of queryRect, made on first use
       -- rayCast's ray and best hit so far (see rayVisit)
       x = 0, y = 0, dx = 0, dy = 0, filter = false, hit = false, rank = 0, d = 0, hx = 0, hy = 0, nx = 0, ny = 0,
       shape = false,
+      -- the verdicts of a filter function, by proxy id, for the query with this stamp
+      -- (valid while the id holds a body of the rank noted: see verdict)
+      stamp = 0, vstamp = {}, vrank = {}, vok = {},
+      -- the removals and the tree's version when rayCast's walk started; its second pass's hits
+      removals = 0, version = 0, hits = false,
       space = self, -- (the ray's visitor gets the level alone)
     }
     self._levels[d] = level
@@ -97,7 +119,58 @@ local function enter(self)
   return level
 end
 
-local function leave(self) self._depth = self._depth - 1 end
+local function leave(self, level) self._depth = level.index - 1 end
+
+-- What a call that a game's code interrupted with an error leaves behind, undone: every
+-- level free and holding nothing of the game's, no move under way, no body marked as met.
+local function recover(self)
+  self._depth, self._mover = 0, 0
+  local levels = self._levels
+  for d = 1, #levels do
+    local level = levels[d]
+    level.filter, level.hit, level.shape, level.body, level.sid = false, false, false, false, false
+  end
+  local lists = rawget(self, '_cols')
+  if lists then
+    for d = 1, #lists do
+      local cols = lists[d]
+      local visited = cols.visited
+      for i = 1, #cols do
+        local other = cols[i].other
+        if other then visited[other] = nil end
+      end
+    end
+  end
+end
+
+local function finish(self, ok, ...)
+  self._guard = false
+  if not ok then
+    recover(self)
+    error((...), 0)
+  end
+  return ...
+end
+
+-- Run fn(self, ...) and return what it returns; when it raises an error (a game's filter
+-- or callback did, or strike found a game's value wrong), undo what the call left half done
+-- (recover) and raise the same error again. Used by the calls at the top that may run the
+-- game's code, only then (pcall costs a little); calls those run are protected by it.
+local function protect(self, fn, ...)
+  self._guard = true
+  return finish(self, pcall(fn, self, ...))
+end
+
+-- The filter's verdict on body b (proxy id) for the query of `level`: asked once per body
+-- and query, kept in the level (a query that walks again after the game's code changed the
+-- tree asks no filter twice).
+local function verdict(self, level, f, b, id)
+  local rank = self._rank[id]
+  if level.vstamp[id] == level.stamp and level.vrank[id] == rank then return level.vok[id] end
+  local ok = f(b) and true or false
+  level.vstamp[id], level.vrank[id], level.vok[id] = level.stamp, rank, ok
+  return ok
+end
 
 local function isSpace(v) return type(v) == 'table' and v._tree ~= nil and getmetatable(v) ~= nil end
 
@@ -297,6 +370,7 @@ function Space:remove(body)
   self._group[id], self._sensor[id], self._queued[id] = false, false, false
   body._space, body._sid = false, nil
   self._n = self._n - 1
+  self._removals = self._removals + 1
   return body
 end
 
@@ -326,12 +400,18 @@ local function byRank(self, ids, k)
   for i = 1, k do ids[i] = ids[i] % K end
 end
 
--- Clear list[k + 1 ...].
+-- Clear list[k + 1 ...] (an `out` table may hold anything: past a hole too, when the
+-- length operator still sees it).
 local function trim(list, k)
   local i = k + 1
   while list[i] ~= nil do
     list[i] = nil
     i = i + 1
+  end
+  if #list > k then
+    for key in pairs(list) do
+      if type(key) == 'number' and key > k then list[key] = nil end
+    end
   end
 end
 
@@ -343,15 +423,23 @@ function Space:bodies(out)
   if not isSpace(self) then badSelf(self, 'strike.Space:bodies') end
   checkOut('strike.Space:bodies', out, 1)
   out = out or {}
+  -- (the ids are sorted in a list of the space's own: whatever `out` held is overwritten,
+  -- never sorted or read)
+  local ids = rawget(self, '_bodyIds')
+  if not ids then
+    ids = {}
+    self._bodyIds = ids
+  end
   local body, k = self._body, 0
   for id = 1, self._tree.idTop do
     if body[id] then
       k = k + 1
-      out[k] = id
+      ids[k] = id
     end
   end
-  byRank(self, out, k)
-  for i = 1, k do out[i] = body[out[i]] end
+  trim(ids, k)
+  byRank(self, ids, k)
+  for i = 1, k do out[i] = body[ids[i]] end
   trim(out, k)
   return out, k
 end
@@ -389,7 +477,8 @@ end
 
 --- Call fn(a, b, record) for every pair that begins, stays or ends touching, during
 --- collisions() (see the README for the order). Several callbacks run in the order they were
---- registered. Returns fn.
+--- registered; one registered while collisions() runs its events gets them from the next
+--- event on. Returns fn.
 ---@param event string 'begin', 'stay' or 'end'
 ---@param fn function
 ---@return function fn
@@ -405,8 +494,8 @@ function Space:on(event, fn)
   return fn
 end
 
---- Remove a callback registered with on (its first registration for that event). Returns
---- true when it was found.
+--- Remove a callback registered with on (its first registration for that event): it is not
+--- called again, even by the collisions() call in progress. Returns true when it was found.
 ---@param event string
 ---@param fn function
 ---@return boolean
@@ -416,16 +505,19 @@ function Space:off(event, fn)
   local list = self._on[event]
   for i = 1, #list do
     if list[i] == fn then
-      table.remove(list, i)
+      if self._emE > 0 then
+        -- (events are running, or waiting to run after an error: the lists keep their
+        -- places, see emitEvents; the hole is closed when they are done)
+        list[i] = false
+        self._compact = true
+      else
+        table.remove(list, i)
+      end
       self._listeners = self._listeners - 1
       return true
     end
   end
   return false
-end
-
-local function emit(list, rec)
-  for i = 1, #list do list[i](rec.a, rec.b, rec) end
 end
 
 -- A record from the pool, or a new one. Each owns an MTV (`_m`) and a contact list (`_c`).
@@ -438,7 +530,30 @@ local function takeRecord(self)
     return rec
   end
   return { a = false, b = false, mtv = false, sensor = false, contacts = nil, _m = MTV(), _c = {}, _key = 0,
-    _frame = 0, _since = 0, _order = 0, _ids = {}, _sa = {}, _sb = {}, _np = 0 }
+    _frame = 0, _since = 0, _order = 0, _begun = false, _ids = {}, _sa = {}, _sb = {}, _np = 0 }
+end
+
+-- Let go of the shapes an MTV (and a list of contact points) names.
+local function forget(m, c)
+  m.colliderShape, m.collidedShape, m.collider, m.collided = false, false, false, false
+  local i, p = 1, c[1]
+  while p do
+    p.colliderShape, p.collidedShape = false, false
+    i = i + 1
+    p = c[i]
+  end
+  p = c._spare
+  if p then p.colliderShape, p.collidedShape = false, false end
+end
+
+-- Give an ended record back to the pool, holding nothing of the game's.
+local function poolRecord(self, rec)
+  rec.a, rec.b, rec.mtv, rec.contacts, rec._begun = false, false, false, nil, false
+  forget(rec._m, rec._c)
+  local sa, sb = rec._sa, rec._sb
+  for i = 1, #sa do sa[i], sb[i] = false, false end
+  local pool = self._pool
+  pool[#pool + 1] = rec
 end
 
 local function byOrder(r1, r2) return r1._order < r2._order end
@@ -472,61 +587,176 @@ local function contacts(self, rec)
   end
 end
 
+-- Are both bodies of the record still in the space, as the bodies it was made for (not
+-- removed, nor removed and added again: a new rank)?
+local function recordLive(self, rec)
+  local a, b = rec.a, rec.b
+  if rawget(a, '_space') ~= self or rawget(b, '_space') ~= self then return false end
+  local rank = self._rank
+  return rank[a._sid] * K + rank[b._sid] == rec._order
+end
+
+-- Run the events of the last collisions() from where they stand (the state the space keeps:
+-- see Space:new), to the end: first 'end' for the pairs in _ended, then 'begin' or 'stay'
+-- for the touching pairs in _prev, each with every callback of its kind in order. The place
+-- is saved before each callback runs, so that when one raises an error, the next call of
+-- collisions() goes on after it: each callback sees every event once, and every pair that
+-- began ends once. A pair whose body was removed during the events (by a callback) gets no
+-- more events now ('end' at the next call if it began); one that never began never ends.
+local function emitEvents(self)
+  local on, ended, prev = self._on, self._ended, self._prev
+  local ne, n = self._emNe, self._emN
+  local e, c = self._emE, self._emC
+  local listen = self._listeners > 0
+  while e <= n do
+    local rec, kind, count
+    if c == 1 then -- (the event starts: which kind, if any)
+      if e <= ne then
+        rec = ended[e]
+        if rec._begun then kind = 'end' end
+      else
+        rec = prev[e - ne]
+        if self._removals == self._emR or recordLive(self, rec) then
+          if rec._begun then kind = 'stay' else kind = 'begin' end
+          rec._begun = true
+          if not listen then
+            rec.contacts = nil
+          elseif not rec.sensor then
+            contacts(self, rec)
+          else
+            rec.contacts = nil
+          end
+        end
+      end
+      if kind then
+        count = #on[kind]
+        self._emKind, self._emCount = kind, count
+      else
+        count = 0
+      end
+    else -- (going on after an error, within an event)
+      rec = e <= ne and ended[e] or prev[e - ne]
+      kind, count = self._emKind, self._emCount
+    end
+    if count > 0 then
+      local list = on[kind]
+      for i = c, count do
+        local f = list[i]
+        if f then
+          self._emE, self._emC = e, i + 1
+          f(rec.a, rec.b, rec)
+        end
+      end
+    end
+    e, c = e + 1, 1
+  end
+  self._emE, self._emC = 0, 1
+  for p = 1, ne do
+    local rec = ended[p]
+    ended[p] = false
+    poolRecord(self, rec)
+  end
+  if self._compact then -- (close the holes off() left)
+    self._compact = false
+    for _, list in pairs(on) do
+      local j = 0
+      for i = 1, #list do
+        local f = list[i]
+        list[i] = nil
+        if f then
+          j = j + 1
+          list[j] = f
+        end
+      end
+    end
+  end
+end
+
 ------------------------------------------------------------------ collisions
 
---- Every colliding pair of solid bodies (neither a sensor) that layers, masks, groups and
---- the pair filter allow, as records `{a =, b =, mtv =, sensor = false, contacts =}` (a added
---- before b; mtv as S.triking(a, b), from a toward b), in pair order. The records are the
---- space's: they are reused by the next call. Also runs the contact events (see on).
----@param out table|nil
----@return table list
----@return integer n
-function Space:collisions(out)
-  if not isSpace(self) then badSelf(self, 'strike.Space:collisions') end
-  checkOut('strike.Space:collisions', out, 1)
-  out = out or {}
+-- Drop from list[1..k] the records that name a body removed since (by a filter or a
+-- callback); returns the new count.
+local function dropDead(self, list, k)
+  local j = 0
+  for i = 1, k do
+    local rec = list[i]
+    if recordLive(self, rec) then
+      j = j + 1
+      list[j] = rec
+    end
+  end
+  trim(list, j)
+  return j
+end
+
+local function collisionsOf(self, out)
+  if self._emE > 0 then emitEvents(self) end -- (events an error stopped last time)
   flush(self)
   local buf = self._buf
   local np = self._tree:pairs(buf)
   local frame = self._frame + 1
   self._frame = frame
-  local body, rank, sensorOf, active = self._body, self._rank, self._sensor, self._active
+  self._nfresh = 0
+  local removals = self._removals
+  local body, rank, sensorOf, active, fresh = self._body, self._rank, self._sensor, self._active, self._fresh
   local mask, group, pf = self._mask, self._group, self._pairFilter
   local cur, ncur, sorted, last = self._cur, 0, true, -1
   local scratch = self._scratch
   for p = 1, np do
     local i, j = buf[2 * p - 1], buf[2 * p]
-    local key = i * K + j
-    if rank[i] > rank[j] then i, j = j, i end
-    local g = group[i]
-    -- (the usual case inline: no masks, groups or pair filter to ask)
-    if (not mask[i] and not mask[j] and (g == 0 or g ~= group[j]) and not pf) or allowed(self, i, j) then
-      local a, b = body[i], body[j]
-      local rec = active[key]
-      local order = rank[i] * K + rank[j]
-      -- (a record of other bodies under a reused id, or of these bodies before one of them
-      -- was removed and added again: that pair ended)
-      if rec and (rec.a ~= a or rec.b ~= b or rec._order ~= order) then rec = nil end
-      local m = rec and rec._m or scratch
-      if collide(a, b, m) then
-        if not rec then
-          rec = takeRecord(self)
-          rec._m, scratch = scratch, rec._m
-          self._scratch = scratch
-          rec.a, rec.b, rec._key, rec._since, rec.contacts = a, b, key, frame, nil
-          active[key] = rec
+    local a, b = body[i], body[j]
+    if a and b then -- (false: the pair filter removed one)
+      local key = i * K + j
+      if rank[i] > rank[j] then i, j = j, i end
+      local g = group[i]
+      -- (the usual case inline: no masks, groups or pair filter to ask)
+      if (not mask[i] and not mask[j] and (g == 0 or g ~= group[j]) and not pf) or allowed(self, i, j) then
+        a, b = body[i], body[j] -- (the pair filter may have removed either, or added a body in its place)
+        if a and b then
+          local rec = active[key]
+          local order = rank[i] * K + rank[j]
+          -- (a record of other bodies under a reused id, or of these bodies before one of them
+          -- was removed and added again: that pair ended)
+          if rec and (rec.a ~= a or rec.b ~= b or rec._order ~= order) then rec = nil end
+          local m = rec and rec._m or scratch
+          if collide(a, b, m) then
+            if not rec then
+              rec = takeRecord(self)
+              rec._m, scratch = scratch, rec._m
+              self._scratch = scratch
+              rec.a, rec.b, rec._key, rec._since, rec.contacts, rec._begun = a, b, key, frame, nil, false
+              active[key] = rec
+              local nf = self._nfresh + 1
+              self._nfresh, fresh[nf] = nf, rec
+            end
+            local sensor = sensorOf[i] or sensorOf[j]
+            rec.sensor, rec.mtv, rec._frame = sensor, not sensor and rec._m, frame
+            rec._order = order
+            if order < last then sorted = false end
+            last = order
+            ncur = ncur + 1
+            cur[ncur] = rec
+          end
         end
-        local sensor = sensorOf[i] or sensorOf[j]
-        rec.sensor, rec.mtv, rec._frame = sensor, not sensor and rec._m, frame
-        rec._order = order
-        if order < last then sorted = false end
-        last = order
-        ncur = ncur + 1
-        cur[ncur] = rec
       end
     end
   end
   trim(cur, ncur)
+  if self._removals ~= removals then
+    -- (the pair filter removed bodies: their pairs found before are not touching now)
+    local k = 0
+    for p = 1, ncur do
+      local rec = cur[p]
+      if recordLive(self, rec) then
+        k = k + 1
+        cur[k] = rec
+      else
+        rec._frame = 0
+      end
+    end
+    trim(cur, k)
+    ncur = k
+  end
   if not sorted then table.sort(cur, byOrder) end
   -- The state first (which pairs ended, the new list, out), then the callbacks: a callback
   -- that raises an error leaves the space as consistent as one that returns.
@@ -539,11 +769,19 @@ function Space:collisions(out)
       ended[ne] = rec
     end
   end
-  local k, listen = 0, self._listeners > 0
+  for p = 1, self._nfresh do -- (made now and dropped above)
+    local rec = fresh[p]
+    fresh[p] = false
+    if rec._frame ~= frame then
+      if active[rec._key] == rec then active[rec._key] = nil end
+      poolRecord(self, rec)
+    end
+  end
+  self._nfresh = 0
+  local k = 0
   for p = 1, ncur do
     local rec = cur[p]
     prev[p] = rec
-    if not listen then rec.contacts = nil end -- (only computed for the callbacks)
     if not rec.sensor then
       k = k + 1
       out[k] = rec
@@ -552,25 +790,68 @@ function Space:collisions(out)
   trim(prev, ncur)
   self._nprev = ncur
   trim(out, k)
-  if listen then
-    local on = self._on
-    for p = 1, ne do emit(on['end'], ended[p]) end
+  if self._listeners == 0 then -- (nobody to tell: the events are over at once)
     for p = 1, ncur do
       local rec = cur[p]
-      if not rec.sensor then contacts(self, rec) else rec.contacts = nil end
-      emit(rec._since == frame and on.begin or on.stay, rec)
+      rec._begun, rec.contacts = true, nil
     end
+    for p = 1, ne do
+      poolRecord(self, ended[p])
+      ended[p] = false
+    end
+  else
+    self._emE, self._emC, self._emNe, self._emN, self._emR = 1, 1, ne, ne + ncur, self._removals
+    emitEvents(self)
   end
-  local pool = self._pool
-  for p = 1, ne do
-    local rec = ended[p]
-    ended[p] = false
-    rec.a, rec.b, rec.mtv, rec.contacts = false, false, false, nil
-    pool[#pool + 1] = rec
-  end
-  self._nprev = ncur
-  trim(out, k)
+  if self._removals ~= removals then k = dropDead(self, out, k) end
   return out, k
+end
+
+-- collisions() interrupted by an error: when it came from the pair filter, the pairs of
+-- this call are forgotten (the records it made go back to the pool; the next call starts
+-- from the last one that finished); when it came from a callback, the events left wait for
+-- the next call (emitEvents).
+local function endCollisions(self, guard, ok, ...)
+  self._inCollisions = false
+  self._guard = guard
+  if not ok then
+    local fresh = self._fresh
+    for p = 1, self._nfresh do
+      local rec = fresh[p]
+      fresh[p] = false
+      if self._active[rec._key] == rec then self._active[rec._key] = nil end
+      poolRecord(self, rec)
+    end
+    self._nfresh = 0
+    if not guard then recover(self) end
+    error((...), 0)
+  end
+  return ...
+end
+
+--- Every colliding pair of solid bodies (neither a sensor) that layers, masks, groups and
+--- the pair filter allow, as records `{a =, b =, mtv =, sensor = false, contacts =}` (a added
+--- before b; mtv as S.triking(a, b), from a toward b), in pair order. The records are the
+--- space's: they are reused by the next call. Also runs the contact events (see on). The
+--- pair filter and the callbacks may add, remove, move and query bodies (not call
+--- collisions() again); pairs of a body they removed are not in the list.
+---@param out table|nil
+---@return table list
+---@return integer n
+function Space:collisions(out)
+  if not isSpace(self) then badSelf(self, 'strike.Space:collisions') end
+  checkOut('strike.Space:collisions', out, 1)
+  if self._inCollisions then
+    fail('strike.Space:collisions: called from the pair filter or an event callback of the same space\'s'
+      .. ' collisions(), which is still running')
+  end
+  out = out or {}
+  if self._pairFilter or self._listeners > 0 or self._emE > 0 then
+    local guard = self._guard
+    self._inCollisions, self._guard = true, true
+    return endCollisions(self, guard, pcall(collisionsOf, self, out))
+  end
+  return collisionsOf(self, out)
 end
 
 ------------------------------------------------------------------ queries
@@ -583,16 +864,39 @@ local function candidates(self, level, x0, y0, x1, y1)
   return k
 end
 
+-- Is the body in this space?
+local function present(self, b)
+  return rawget(b, '_space') == self
+end
+
+-- Drop from list[1..k] the bodies (or the records whose `field` names a body) that a
+-- filter removed from the space during the call; returns the new count. Dropped records go
+-- past it, where trimRecords keeps them as spares.
+local function dropRemoved(self, list, k, field)
+  local j = 0
+  for i = 1, k do
+    local v = list[i]
+    if present(self, field and v[field] or v) then
+      j = j + 1
+      list[i], list[j] = list[j], v
+    end
+  end
+  if not field then trim(list, j) end
+  return j
+end
+
 -- Records that a query leaves in the caller's `out` (check's pairs, rayCastAll's hits) are
 -- reused: the one at out[k] when it is ours (it has the field `mark`), else one from
 -- out._spare, else a new one from make().
 local function outRecord(out, k, mark, make)
   local rec = out[k]
-  if type(rec) == 'table' and rec[mark] ~= nil then return rec end
-  local spare = out._spare
+  if type(rec) == 'table' and rawget(rec, mark) ~= nil then return rec end
+  local spare = rawget(out, '_spare')
+  if type(spare) ~= 'table' then spare = nil end
   local n = spare and #spare or 0
-  if n > 0 and spare[n][mark] ~= nil then -- (an `out` passed to both kinds holds both)
-    rec = spare[n]
+  local top = n > 0 and spare[n]
+  if type(top) == 'table' and rawget(top, mark) ~= nil then -- (an `out` passed to both kinds holds both)
+    rec = top
     spare[n] = nil
   else
     rec = make()
@@ -606,14 +910,17 @@ end
 local function trimRecords(out, k, mark)
   local i = k + 1
   local rec = out[i]
-  if rec == nil then return end
-  local spare = out._spare
-  if not spare then
+  if rec == nil then
+    trim(out, k)
+    return
+  end
+  local spare = rawget(out, '_spare')
+  if type(spare) ~= 'table' then
     spare = {}
     out._spare = spare
   end
   while rec ~= nil do
-    if type(rec) == 'table' and rec[mark] ~= nil then
+    if type(rec) == 'table' and rawget(rec, mark) ~= nil then
       rec.a, rec.b, rec.body, rec.shape = nil, nil, nil, nil
       spare[#spare + 1] = rec
     end
@@ -621,10 +928,51 @@ local function trimRecords(out, k, mark)
     i = i + 1
     rec = out[i]
   end
+  trim(out, k)
 end
 
 local function newPair() return { a = false, b = false, mtv = false, _m = MTV() } end
 local function newHit() return { _rank = 0 } end
+
+-- May a query's filter (checked: nil, a function or a layer filter) run game code?
+local function gameFilter(f) return type(f) == 'function' end
+
+local function checkOf(self, body, filterArg, out)
+  flush(self)
+  local inside = rawget(body, '_space') == self
+  local self_id = inside and body._sid
+  local k = 0
+  if not (inside and self._sensor[self_id]) then
+    local x0, y0, x1, y1
+    if inside then x0, y0, x1, y1 = self._tree:box(self_id) else x0, y0, x1, y1 = body:getBounds() end
+    local level = enter(self)
+    local removals = self._removals
+    local ids, bodies, layer, sensor, rank = level.ids, self._body, self._layer, self._sensor, self._rank
+    local n = candidates(self, level, x0, y0, x1, y1)
+    for c = 1, n do
+      local id = ids[c]
+      local other = bodies[id]
+      -- (other is false when a filter removed it since)
+      if other and id ~= self_id and not sensor[id] and queryFilter(filterArg, other, layer[id]) then
+        local ok = true
+        if inside then
+          if rank[self_id] < rank[id] then ok = allowed(self, self_id, id) else ok = allowed(self, id, self_id) end
+        end
+        if ok and bodies[id] == other and (not inside or present(self, body)) then
+          local rec = outRecord(out, k + 1, '_m', newPair)
+          if collide(body, other, rec._m) then
+            k = k + 1
+            rec.a, rec.b, rec.mtv = body, other, rec._m
+          end
+        end
+      end
+    end
+    leave(self, level)
+    if self._removals ~= removals then k = dropRemoved(self, out, k, 'b') end
+  end
+  trimRecords(out, k, '_m')
+  return out, k
+end
 
 --- The solid bodies colliding with `body` (in this space or not), as records
 --- `{a = body, b = other, mtv =}` (mtv as S.triking(body, other)) in rank order. For a body
@@ -641,38 +989,10 @@ function Space:check(body, filterArg, out)
   checkQuery(filterArg, 'strike.Space:check', 2)
   checkOut('strike.Space:check', out, 3)
   out = out or {}
-  flush(self)
-  local inside = rawget(body, '_space') == self
-  local self_id = inside and body._sid
-  local k = 0
-  if not (inside and self._sensor[self_id]) then
-    local x0, y0, x1, y1
-    if inside then x0, y0, x1, y1 = self._tree:box(self_id) else x0, y0, x1, y1 = body:getBounds() end
-    local level = enter(self)
-    local ids, bodies, layer, sensor, rank = level.ids, self._body, self._layer, self._sensor, self._rank
-    local n = candidates(self, level, x0, y0, x1, y1)
-    for c = 1, n do
-      local id = ids[c]
-      local other = bodies[id]
-      -- (other is false when a filter removed it since)
-      if other and id ~= self_id and not sensor[id] and queryFilter(filterArg, other, layer[id]) then
-        local ok = true
-        if inside then
-          if rank[self_id] < rank[id] then ok = allowed(self, self_id, id) else ok = allowed(self, id, self_id) end
-        end
-        if ok then
-          local rec = outRecord(out, k + 1, '_m', newPair)
-          if collide(body, other, rec._m) then
-            k = k + 1
-            rec.a, rec.b, rec.mtv = body, other, rec._m
-          end
-        end
-      end
-    end
-    leave(self)
+  if not self._guard and (gameFilter(filterArg) or self._pairFilter) then
+    return protect(self, checkOf, body, filterArg, out)
   end
-  trimRecords(out, k, '_m')
-  return out, k
+  return checkOf(self, body, filterArg, out)
 end
 
 local function number(fname, v, name)
@@ -680,6 +1000,26 @@ local function number(fname, v, name)
     fail(('%s: %s must be a finite number, got %s'):format(fname, name, describe(v)))
   end
   return v
+end
+
+local function queryPointOf(self, x, y, filterArg, out)
+  flush(self)
+  local level = enter(self)
+  local removals = self._removals
+  local ids, bodies, layer = level.ids, self._body, self._layer
+  local n, k = candidates(self, level, x, y, x, y), 0
+  for c = 1, n do
+    local id = ids[c]
+    local b = bodies[id]
+    if b and queryFilter(filterArg, b, layer[id]) and b:containsPoint(x, y) then
+      k = k + 1
+      out[k] = b
+    end
+  end
+  leave(self, level)
+  if self._removals ~= removals then k = dropRemoved(self, out, k) end
+  trim(out, k)
+  return out, k
 end
 
 --- The bodies containing the point (x, y) (as their containsPoint), sensors included, in
@@ -697,27 +1037,15 @@ function Space:queryPoint(x, y, filterArg, out)
   checkQuery(filterArg, 'strike.Space:queryPoint', 3)
   checkOut('strike.Space:queryPoint', out, 4)
   out = out or {}
-  flush(self)
-  local level = enter(self)
-  local ids, bodies, layer = level.ids, self._body, self._layer
-  local n, k = candidates(self, level, x, y, x, y), 0
-  for c = 1, n do
-    local id = ids[c]
-    local b = bodies[id]
-    if b and queryFilter(filterArg, b, layer[id]) and b:containsPoint(x, y) then
-      k = k + 1
-      out[k] = b
-    end
-  end
-  leave(self)
-  trim(out, k)
-  return out, k
+  if not self._guard and gameFilter(filterArg) then return protect(self, queryPointOf, x, y, filterArg, out) end
+  return queryPointOf(self, x, y, filterArg, out)
 end
 
 -- The bodies colliding with `probe` (a shape or collider; skipped itself), as queryShape.
 -- `level` is the query's scratch (enter), which this leaves.
 local function overlapping(self, level, probe, filterArg, out)
   flush(self)
+  local removals = self._removals
   local x0, y0, x1, y1 = probe:getBounds()
   local ids, bodies, layer, scratch = level.ids, self._body, self._layer, self._scratch
   local n, k = candidates(self, level, x0, y0, x1, y1), 0
@@ -729,7 +1057,8 @@ local function overlapping(self, level, probe, filterArg, out)
       out[k] = b
     end
   end
-  leave(self)
+  leave(self, level)
+  if self._removals ~= removals then k = dropRemoved(self, out, k) end
   trim(out, k)
   return out, k
 end
@@ -740,6 +1069,24 @@ local function side(fname, v)
     fail(('%s: w and h must be numbers from %s to %s, got %s'):format(fname, describe(limits.MIN_LENGTH),
       describe(limits.MAX_LENGTH), describe(v)))
   end
+end
+
+local function queryRectOf(self, x, y, w, h, filterArg, out)
+  local level = enter(self)
+  local probe = level.probe
+  if not probe then
+    probe = Rectangle(0, 0, 1, 1)
+    level.probe = probe
+  end
+  -- (the probe's local geometry set in place: corners at (+-w/2, +-h/2), as the
+  -- constructor lays them out, normals unchanged; then its centre)
+  local hw, hh = w / 2, h / 2
+  local l = probe._l
+  l[1], l[2], l[5], l[6], l[9], l[10], l[13], l[14] = -hw, -hh, hw, -hh, hw, hh, -hw, hh
+  probe.dx, probe.dy, probe[AREA], probe[RADIUS] = w, h, w * h, sqrt(hw * hw + hh * hh)
+  probe[X], probe[Y] = x + hw, y + hh
+  probe:_touch()
+  return overlapping(self, level, probe, filterArg, out)
 end
 
 --- The bodies overlapping the rectangle with its minimum corner at (x, y), w wide and h
@@ -766,21 +1113,12 @@ function Space:queryRect(x, y, w, h, filterArg, out)
   checkQuery(filterArg, fname, 5)
   checkOut(fname, out, 6)
   out = out or {}
-  local level = enter(self)
-  local probe = level.probe
-  if not probe then
-    probe = Rectangle(0, 0, 1, 1)
-    level.probe = probe
-  end
-  -- (the probe's local geometry set in place: corners at (+-w/2, +-h/2), as the
-  -- constructor lays them out, normals unchanged; then its centre)
-  local hw, hh = w / 2, h / 2
-  local l = probe._l
-  l[1], l[2], l[5], l[6], l[9], l[10], l[13], l[14] = -hw, -hh, hw, -hh, hw, hh, -hw, hh
-  probe.dx, probe.dy, probe[AREA], probe[RADIUS] = w, h, w * h, sqrt(hw * hw + hh * hh)
-  probe[X], probe[Y] = x + hw, y + hh
-  probe:_touch()
-  return overlapping(self, level, probe, filterArg, out)
+  if not self._guard and gameFilter(filterArg) then return protect(self, queryRectOf, x, y, w, h, filterArg, out) end
+  return queryRectOf(self, x, y, w, h, filterArg, out)
+end
+
+local function queryShapeOf(self, shape, filterArg, out)
+  return overlapping(self, enter(self), shape, filterArg, out)
 end
 
 --- The bodies colliding with a shape or collider (as S.triking; it need not be in the
@@ -795,7 +1133,9 @@ function Space:queryShape(shape, filterArg, out)
   checkBody('strike.Space:queryShape', shape, 1)
   checkQuery(filterArg, 'strike.Space:queryShape', 2)
   checkOut('strike.Space:queryShape', out, 3)
-  return overlapping(self, enter(self), shape, filterArg, out or {})
+  out = out or {}
+  if not self._guard and gameFilter(filterArg) then return protect(self, queryShapeOf, shape, filterArg, out) end
+  return queryShapeOf(self, shape, filterArg, out)
 end
 
 ------------------------------------------------------------------ rays
@@ -829,22 +1169,91 @@ local function rayBody(b, x, y, dx, dy, maxDistance)
   return leavesRayCast(leaves, n, x, y, dx, dy, maxDistance)
 end
 
--- rayCast's visitor (strike/space/tree.lua, rayVisit): test body `id`, entered at t, and
--- keep its hit in the query's level (enter) when it is nearer than the best so far, or as
--- near and added earlier; return the distance to beat.
+-- Test body `id` (b) against the ray of `level` and keep its hit when it is nearer than the
+-- best so far, or as near and added earlier; return the distance to beat.
+local function rayTry(self, level, id, b, best)
+  local f = level.filter
+  if f then
+    if type(f) == 'function' then
+      if not verdict(self, level, f, b, id) then return best end
+      if self._body[id] ~= b then return best end -- (the filter removed it)
+    elseif not queryFilter(f, b, self._layer[id]) then
+      return best
+    end
+  end
+  local d, px, py, nx, ny, shape = rayBody(b, level.x, level.y, level.dx, level.dy, best)
+  local rank = self._rank[id]
+  if d and (d < best or not level.hit or rank < level.rank) then
+    level.hit, level.rank, level.d, level.shape = b, rank, d, shape
+    level.hx, level.hy, level.nx, level.ny = px, py, nx, ny
+    return d
+  end
+  return best
+end
+
+-- rayCast's visitor (strike/space/tree.lua, rayVisit): test body `id`, entered at t. When
+-- a filter changed the tree meanwhile, the walk stops (-1: nothing is that near) and
+-- rayCastOf starts again without it.
 local function rayVisit(level, id, _, best)
   local self = level.space
   local b = self._body[id]
-  if b and queryFilter(level.filter, b, self._layer[id]) then
-    local d, px, py, nx, ny, shape = rayBody(b, level.x, level.y, level.dx, level.dy, best)
-    local rank = self._rank[id]
-    if d and (d < best or not level.hit or rank < level.rank) then
-      level.hit, level.rank, level.d, level.shape = b, rank, d, shape
-      level.hx, level.hy, level.nx, level.ny = px, py, nx, ny
-      return d
-    end
+  if b then
+    best = rayTry(self, level, id, b, best)
+    if self._removals ~= level.removals or self._tree.version ~= level.version then return -1 end
   end
   return best
+end
+
+local function rayCastOf(self, x, y, dx, dy, ux, uy, maxT, filterArg)
+  flush(self)
+  local level = enter(self)
+  level.stamp = level.stamp + 1
+  level.x, level.y, level.dx, level.dy, level.filter, level.hit = x, y, dx, dy, filterArg or false, false
+  local tree = self._tree
+  local removals, version = self._removals, tree.version
+  level.removals, level.version = removals, version
+  tree:rayVisit(x, y, ux, uy, maxT, rayVisit, level, level.stack, level.tstack)
+  if self._removals ~= removals or tree.version ~= version then
+    -- A filter changed the tree during the walk (removed bodies, or ran a query that brought
+    -- the tree up to date with moves and adds): the walk may have missed boxes, and the best
+    -- hit may be gone. Again over every candidate along the whole ray, from a list taken
+    -- first (no walk to spoil), each filter's verdict kept from the walk; every hit kept, and
+    -- the nearest of the bodies still in the space chosen at the end.
+    local ids, ts, hits = level.ids, level.ts, level.hits
+    if not hits then
+      hits = {}
+      level.hits = hits
+    end
+    local n = tree:rayCandidates(x, y, ux, uy, maxT, ids, ts)
+    local bodies, f, nh = self._body, level.filter, 0
+    for i = 1, n do
+      local id = ids[i]
+      local b = bodies[id]
+      if b and (not f or (type(f) == 'function' and verdict(self, level, f, b, id) or type(f) == 'table'
+        and queryFilter(f, b, self._layer[id]))) and bodies[id] == b then
+        local d, px, py, nx, ny, shape = rayBody(b, x, y, dx, dy, maxT)
+        if d then
+          hits[nh + 1], hits[nh + 2], hits[nh + 3], hits[nh + 4] = b, d, px, py
+          hits[nh + 5], hits[nh + 6], hits[nh + 7], hits[nh + 8] = nx, ny, shape, self._rank[id]
+          nh = nh + 8
+        end
+      end
+    end
+    level.hit = false
+    for h = 1, nh, 8 do
+      local b, d, rank = hits[h], hits[h + 1], hits[h + 7]
+      if present(self, b) and (not level.hit or d < level.d or d == level.d and rank < level.rank) then
+        level.hit, level.d, level.hx, level.hy = b, d, hits[h + 2], hits[h + 3]
+        level.nx, level.ny, level.shape, level.rank = hits[h + 4], hits[h + 5], hits[h + 6], rank
+      end
+    end
+    for h = 1, nh do hits[h] = false end -- (nothing kept alive)
+  end
+  leave(self, level)
+  local hit, shape = level.hit, level.shape
+  level.hit, level.filter, level.shape = false, false, false -- (the level keeps nothing alive)
+  if not hit then return nil end
+  return hit, level.d, level.hx, level.hy, level.nx, level.ny, shape
 end
 
 --- The closest body the ray from (x, y) along (dx, dy) hits within maxDistance (default
@@ -868,20 +1277,50 @@ function Space:rayCast(x, y, dx, dy, maxDistance, filterArg)
   if not isSpace(self) then badSelf(self, 'strike.Space:rayCast') end
   local ux, uy, maxT = checkRay('strike.Space:rayCast', x, y, dx, dy, maxDistance)
   checkQuery(filterArg, 'strike.Space:rayCast', 6)
-  local level = enter(self)
-  level.x, level.y, level.dx, level.dy, level.filter, level.hit = x, y, dx, dy, filterArg, false
-  self._tree:rayVisit(x, y, ux, uy, maxT, rayVisit, level, level.stack, level.tstack)
-  leave(self)
-  local hit = level.hit
-  level.hit, level.filter = false, false -- (the level keeps nothing alive)
-  if not hit then return nil end
-  return hit, level.d, level.hx, level.hy, level.nx, level.ny, level.shape
+  if not self._guard and gameFilter(filterArg) then
+    return protect(self, rayCastOf, x, y, dx, dy, ux, uy, maxT, filterArg)
+  end
+  return rayCastOf(self, x, y, dx, dy, ux, uy, maxT, filterArg)
 end
 
 local function byDistance(r1, r2)
   local d1, d2 = r1.distance, r2.distance
   if d1 ~= d2 then return d1 < d2 end
   return r1._rank < r2._rank
+end
+
+local function rayCastAllOf(self, x, y, dx, dy, ux, uy, maxT, filterArg, out)
+  flush(self)
+  local level = enter(self)
+  local removals = self._removals
+  local ids, ts = level.ids, level.ts
+  local n = self._tree:rayCandidates(x, y, ux, uy, maxT, ids, ts)
+  local bodies, layer, rank, k = self._body, self._layer, self._rank, 0
+  for i = 1, n do
+    local id = ids[i]
+    local b = bodies[id]
+    if b and queryFilter(filterArg, b, layer[id]) then
+      local d, px, py, nx, ny, shape = rayBody(b, x, y, dx, dy, maxT)
+      if d then
+        k = k + 1
+        local rec = outRecord(out, k, '_rank', newHit)
+        rec.body, rec.distance, rec.x, rec.y, rec.nx, rec.ny, rec.shape = b, d, px, py, nx, ny, shape
+        rec._rank = rank[id] or 0
+      end
+    end
+  end
+  leave(self, level)
+  if self._removals ~= removals then k = dropRemoved(self, out, k, 'body') end
+  trimRecords(out, k, '_rank')
+  local sorted = true
+  for j = 2, k do
+    if byDistance(out[j], out[j - 1]) then
+      sorted = false
+      break
+    end
+  end
+  if not sorted then table.sort(out, byDistance) end
+  return out, k
 end
 
 --- Every body the ray hits within maxDistance, once each at its first crossing, as records
@@ -902,35 +1341,10 @@ function Space:rayCastAll(x, y, dx, dy, maxDistance, filterArg, out)
   checkQuery(filterArg, 'strike.Space:rayCastAll', 6)
   checkOut('strike.Space:rayCastAll', out, 7)
   out = out or {}
-  flush(self)
-  local level = enter(self)
-  local ids, ts = level.ids, level.ts
-  local n = self._tree:rayCandidates(x, y, ux, uy, maxT, ids, ts)
-  local bodies, layer, rank, k = self._body, self._layer, self._rank, 0
-  for i = 1, n do
-    local id = ids[i]
-    local b = bodies[id]
-    if b and queryFilter(filterArg, b, layer[id]) then
-      local d, px, py, nx, ny, shape = rayBody(b, x, y, dx, dy, maxT)
-      if d then
-        k = k + 1
-        local rec = outRecord(out, k, '_rank', newHit)
-        rec.body, rec.distance, rec.x, rec.y, rec.nx, rec.ny, rec.shape = b, d, px, py, nx, ny, shape
-        rec._rank = rank[id]
-      end
-    end
+  if not self._guard and gameFilter(filterArg) then
+    return protect(self, rayCastAllOf, x, y, dx, dy, ux, uy, maxT, filterArg, out)
   end
-  leave(self)
-  trimRecords(out, k, '_rank')
-  local sorted = true
-  for j = 2, k do
-    if byDistance(out[j], out[j - 1]) then
-      sorted = false
-      break
-    end
-  end
-  if not sorted then table.sort(out, byDistance) end
-  return out, k
+  return rayCastAllOf(self, x, y, dx, dy, ux, uy, maxT, filterArg, out)
 end
 
 ------------------------------------------------------------------ motion
@@ -940,7 +1354,7 @@ end
 --- candidates of a box, the pair rules and the argument checks.
 Space._internals = {
   enter = enter, leave = leave, flush = flush, candidates = candidates, allowed = allowed, isSpace = isSpace,
-  checkBody = checkBody, idOf = idOf,
+  checkBody = checkBody, idOf = idOf, protect = protect, present = present,
 }
 
 ------------------------------------------------------------------ drawing support

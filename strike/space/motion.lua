@@ -44,6 +44,7 @@ local private = Space._internals
 
 local enter, leave, flush, candidates = private.enter, private.leave, private.flush, private.candidates
 local allowed, isSpace, checkBody, idOf = private.allowed, private.isSpace, private.checkBody, private.idOf
+local protect, present = private.protect, private.present
 
 --- The gap a move leaves between a body and what stops it: SKIN times the body's radius,
 --- plus a rounding of its position (README, "Moving bodies").
@@ -62,7 +63,10 @@ local hitScratch = {}
 -- The candidates are those of the box the move sweeps (the broadphase brought up to date
 -- first). With `cache` (a move's), they are those of a larger box kept from an earlier leg or
 -- move while nothing but the body moving has moved (the body itself waits in the queue).
-local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cache, pad)
+-- `game`: pick may run the game's code (a filter function, the pair filter), which may
+-- remove bodies: a body removed is not hit, nor is one removed after it was (the hits are
+-- kept in level.hits to choose again from); moving the body `b` itself is an error.
+local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cache, pad, game)
   local x0, y0, x1, y1 = b:getBounds()
   if dx < 0 then x0 = x0 + dx else x1 = x1 + dx end
   if dy < 0 then y0 = y0 + dy else y1 = y1 + dy end
@@ -92,6 +96,7 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
   local la, na = leavesOf(b, one1)
   local found, bt, bcorner, badn = false, huge, false, huge
   local dl = sqrt(dx * dx + dy * dy)
+  local removals, pose, hits, nh = self._removals, na > 0 and la[1]._pose, level.hits, 0
   for c = 1, n do
     local id = ids[c]
     local other = bodies[id]
@@ -154,9 +159,39 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
             out.t, out.x, out.y, out.nx, out.ny, out.overlapping = t, x, y, nx, ny, overlapping
             out.body, out.pick = other, p
           end
+          if game then
+            if not hits then
+              hits = {}
+              level.hits = hits
+            end
+            hits[nh + 1], hits[nh + 2], hits[nh + 3], hits[nh + 4], hits[nh + 5] = other, t, x, y, nx
+            hits[nh + 6], hits[nh + 7], hits[nh + 8], hits[nh + 9], hits[nh + 10] = ny, corner, overlapping, adn, p
+            hits[nh + 11] = tieT
+            nh = nh + 11
+          end
         end
       end
     end
+  end
+  if game then
+    if na > 0 and la[1]._pose ~= pose then
+      fail(('%s: a filter moved the body being moved (move other bodies only, or change the goal)')
+        :format(away and 'strike.Space:move' or 'strike.Space:cast'))
+    end
+    if found and self._removals ~= removals and not present(self, out.body) then
+      -- (a filter removed the body hit after it was found: the first of those left)
+      found = false
+      for h = 1, nh, 11 do
+        local other, t, corner, adn = hits[h], hits[h + 1], hits[h + 6], hits[h + 8]
+        if present(self, other) and (not found or better(t, corner, adn, bt, bcorner, badn, hits[h + 10])) then
+          found, bt, bcorner, badn = true, t, corner, adn
+          out.t, out.x, out.y, out.nx, out.ny, out.overlapping = t, hits[h + 2], hits[h + 3], hits[h + 4],
+            hits[h + 5], hits[h + 7]
+          out.body, out.pick = other, hits[h + 9]
+        end
+      end
+    end
+    for h = 1, nh do hits[h] = false end -- (nothing kept alive)
   end
   return found
 end
@@ -175,6 +210,24 @@ local function castPick(level, other, id)
   if not queryFilter(level.filter, other, self._layer[id]) then return false end
   local sid = level.sid
   return not sid or pairAllowed(self, sid, id)
+end
+
+local function castOf(self, body, dx, dy, filterArg, out, game)
+  flush(self)
+  local inside = rawget(body, '_space') == self
+  local sid = inside and body._sid
+  if sid and self._sensor[sid] then return false end
+  local level = enter(self)
+  level.filter, level.sid = filterArg, sid
+  local found = first(self, level, body, sid, dx, dy, castPick, level, false, out, nil, 0, game)
+  leave(self, level)
+  level.filter, level.sid = false, false
+  if not found then
+    out.body, out.pick = nil, nil
+    return false
+  end
+  out.pick = nil
+  return out
 end
 
 --- The first body that `body` (in this space or not) would hit moving by (dx, dy): the hit
@@ -204,21 +257,10 @@ function Space:cast(body, dx, dy, filterArg, out)
       what(out)))
   end
   out = out or {}
-  flush(self)
   local inside = rawget(body, '_space') == self
-  local sid = inside and body._sid
-  if sid and self._sensor[sid] then return false end
-  local level = enter(self)
-  level.filter, level.sid = filterArg, sid
-  local found = first(self, level, body, sid, dx, dy, castPick, level, false, out)
-  leave(self)
-  level.filter, level.sid = false, false
-  if not found then
-    out.body, out.pick = nil, nil
-    return false
-  end
-  out.pick = nil
-  return out
+  local game = type(filterArg) == 'function' or inside and self._pairFilter and true or false
+  if game and not self._guard then return protect(self, castOf, body, dx, dy, filterArg, out, game) end
+  return castOf(self, body, dx, dy, filterArg, out, game)
 end
 
 ------------------------------------------------------------------ move
@@ -312,22 +354,27 @@ local function colAt(cols, k)
   return col
 end
 
--- The options of move: the up direction, the cosine of the steepest walkable slope (false:
--- none), the snap and step heights (0: none).
-local upX, upY, walkCos, snapH, stepH = 0, -1, false, 0, 0
+-- The options of a move, validated (before anything moves): the up direction, the cosine of
+-- the steepest walkable slope (false: none), the snap and step heights (0: none). Each move
+-- keeps them in its level (enter): a move run from a filter of another has its own, and
+-- one that fails leaves the other's as they were.
 local OPTS = { up = true, slope = true, snap = true, step = true }
 
 local function readOptions(F, opts)
-  upX, upY, walkCos, snapH, stepH = 0, -1, false, 0, 0
-  if opts == nil then return end
-  if type(opts) ~= 'table' or getmetatable(opts) ~= nil then
+  if opts == nil then return 0, -1, false, 0, 0 end
+  if type(opts) ~= 'table' then
     fail(('%s: argument 5 (options) must be a table such as {slope = math.rad(50), snap = 4, step = 8}, got %s')
       :format(F, what(opts)))
+  end
+  if getmetatable(opts) ~= nil then
+    fail(('%s: argument 5 (options) must be a plain table such as {slope = math.rad(50), snap = 4, step = 8},'
+      .. ' got %s with a metatable'):format(F, what(opts)))
   end
   for key in pairs(opts) do
     if not OPTS[key] then fail(('%s: unknown option %s (options are up, slope, snap and step)'):format(F,
       describe(key))) end
   end
+  local upX, upY, walkCos = 0, -1, false
   local up = opts.up
   if up ~= nil then
     if type(up) ~= 'table' or not (finite(up[1]) and finite(up[2])) or up[1] == 0 and up[2] == 0 then
@@ -349,13 +396,14 @@ local function readOptions(F, opts)
       fail(('%s: %s must be a length >= 0, got %s'):format(F, key, describe(v)))
     end
   end
-  snapH, stepH = opts.snap or 0, opts.step or 0
+  return upX, upY, walkCos, opts.snap or 0, opts.step or 0
 end
 
 -- Can the body stand on a surface of normal (nx, ny)? (Any surface facing up when no slope
 -- is given.)
-local function walkable(nx, ny)
-  local c = nx * upX + ny * upY
+local function walkable(level, nx, ny)
+  local c = nx * level.upX + ny * level.upY
+  local walkCos = level.walkCos
   if walkCos then return c >= walkCos end
   return c > 0.7
 end
@@ -363,7 +411,8 @@ end
 -- The slide on walkable ground: the remaining motion keeps its part across `up` and
 -- follows the surface; its downward part is dropped (no sliding down a slope). A motion
 -- going up (a jump) slides as usual.
-local function groundSlide(col, goalX, goalY)
+local function groundSlide(level, col, goalX, goalY)
+  local upX, upY = level.upX, level.upY
   local tx, ty = col.touchX, col.touchY
   local rx, ry = goalX - tx, goalY - ty
   local ru = rx * upX + ry * upY
@@ -391,7 +440,7 @@ local function advance(self, level, body, sid, dx, dy, skin)
     probe = {}
     level.stepHit = probe
   end
-  local h = first(self, level, body, sid, dx, dy, solidPick, level, true, probe)
+  local h = first(self, level, body, sid, dx, dy, solidPick, level, true, probe, nil, 0, level.game)
   local ts, nx, ny = 1, 0, 0
   if h then
     nx, ny = probe.nx, probe.ny
@@ -409,6 +458,7 @@ end
 -- then down onto walkable ground. Returns true with the body there, or false with the body
 -- back where it was.
 local function stepUp(self, level, body, sid, hx, hy, skin)
+  local upX, upY, stepH = level.upX, level.upY, level.stepH
   local x0, y0 = body:getCentroid()
   local tu = advance(self, level, body, sid, upX * stepH, upY * stepH, skin)
   if tu > 0 then
@@ -416,7 +466,7 @@ local function stepUp(self, level, body, sid, hx, hy, skin)
     if th > 0 then
       local up = tu * stepH
       local td, h, nx, ny = advance(self, level, body, sid, -upX * up, -upY * up, skin)
-      if h and td < 1 and walkable(nx, ny) then return true end
+      if h and td < 1 and walkable(level, nx, ny) then return true end
     end
   end
   local x, y = body:getCentroid()
@@ -424,61 +474,30 @@ local function stepUp(self, level, body, sid, hx, hy, skin)
   return false
 end
 
---- Move a body of this space so that its centroid goes toward (goalX, goalY), resolving what
---- it meets on the way (see the header): returns the centroid it reached, the list of
---- collisions in the order they happened and their count. `filter(body, other)` returns a
---- response name for each other body ('slide', the default without a filter; 'touch',
---- 'cross', 'bounce', or one added with addResponse), or nil to pass through it unreported.
---- Each collision is `{other =, type =, t =, nx =, ny =, touchX =, touchY =, x =, y =,
---- overlapping =}`: t the fraction of its leg at the touch, (nx, ny) the unit normal from
---- other toward body, (touchX, touchY) the centroid where the body touched, (x, y) the
---- contact point. The list and its records are reused by the next move.
---- Options for characters (README, "Characters"): `up` (a direction {x, y}; default {0, -1},
---- up on a LÖVE screen), `slope` (the steepest walkable slope, radians: on walkable ground a
---- slide keeps the motion across `up` and never slides down), `snap` (a move that does not
---- go up ends on walkable ground within this distance below, when there is some: no hops
---- down a slope or a stair), `step` (a slide into a wall first tries to climb a ledge up to
---- this high).
----@param body strike.Collider|strike.Shape
----@param goalX number
----@param goalY number
----@param filterFn function|nil
----@param opts table|nil
----@return number actualX
----@return number actualY
----@return table collisions
----@return integer count
-function Space:move(body, goalX, goalY, filterFn, opts)
-  local F = 'strike.Space:move'
-  if not isSpace(self) then badSelf(self, F) end
-  local sid = idOf(self, F, body)
-  if not (finite(goalX) and finite(goalY)) then
-    check.number(goalX, F, 'argument 2 (goalX)')
-    check.number(goalY, F, 'argument 3 (goalY)')
-  end
-  if filterFn ~= nil and type(filterFn) ~= 'function' then
-    fail(('%s: argument 4 (filter) must be a function (body, other) -> response name or nil, got %s'):format(F,
-      what(filterFn)))
-  end
-  -- (the options of a move run from a filter of this one are its own: the outer ones come
-  -- back when it returns)
-  local oUpX, oUpY, oWalkCos, oSnapH, oStepH = upX, upY, walkCos, snapH, stepH
-  readOptions(F, opts)
-  local level = enter(self)
-  -- The collision list of the depth this move runs at (one for moves at the top, another for
-  -- a move run from a filter of a query or of another move, and so on).
-  local depth = self._depth
+-- The collision list of the level a move runs at (one for moves at the top, another for a
+-- move run from a filter of a query or of another move, and so on), with the marks of the
+-- bodies met and the hit scratch.
+local function listOf(self, level)
   local lists = rawget(self, '_cols')
   if not lists then
     lists = {}
     self._cols = lists
   end
+  local depth = level.index
   local cols = lists[depth]
   if not cols then
     cols = { visited = {}, hit = {}, spare = {}, cache = { ids = {}, n = 0, version = -1, x0 = 0, y0 = 0, x1 = 0,
       y1 = 0 } }
     lists[depth] = cols
   end
+  return cols
+end
+
+local function moveOf(self, body, sid, goalX, goalY, filterFn, upX, upY, walkCos, snapH, stepH, character, game)
+  local F = 'strike.Space:move'
+  local level = enter(self)
+  level.upX, level.upY, level.walkCos, level.snapH, level.stepH = upX, upY, walkCos, snapH, stepH
+  local cols = listOf(self, level)
   local visited, hit = cols.visited, cols.hit
   -- (a move that a filter or response interrupted with an error left its marks: clear them)
   for i = 1, #cols do
@@ -490,17 +509,18 @@ function Space:move(body, goalX, goalY, filterFn, opts)
   if self._sensor[sid] then -- (a sensor meets nothing: straight to the goal)
     body:translate(goalX - x, goalY - y)
     x, y = goalX, goalY
-    leave(self)
+    leave(self, level)
   else
     local own = rawget(self, '_responses')
-    level.filter, level.sid, level.body, level.visited = filterFn or false, sid, body, visited
+    level.filter, level.sid, level.body, level.visited, level.game = filterFn or false, sid, body, visited, game
     local size = body:getRadius()
     local rising = (goalX - x) * upX + (goalY - y) * upY > 0
     -- The candidates are kept from leg to leg and from move to move while nothing but this
-    -- body moves (Space.lua, _version), for a move at the top only (no other move under way:
-    -- _mover is 0), in a box padded by the body's radius and the move's length.
+    -- body moves (Space.lua, _version), for a move at the top only (no other call under way:
+    -- level 1, and no other move: _mover is 0), in a box padded by the body's radius and the
+    -- move's length.
     local cache, pad = nil, 0
-    if self._mover == 0 then
+    if level.index == 1 and self._mover == 0 then
       cache, pad = cols.cache, size + sqrt((goalX - x) ^ 2 + (goalY - y) ^ 2)
       self._mover = sid
     end
@@ -508,7 +528,9 @@ function Space:move(body, goalX, goalY, filterFn, opts)
     for _ = 1, 64 do
       local dx, dy = goalX - x, goalY - y
       if dx == 0 and dy == 0 then break end
-      if not first(self, level, body, sid, dx, dy, movePick, level, true, hit, cache, pad) then
+      local found = first(self, level, body, sid, dx, dy, movePick, level, true, hit, cache, pad, game)
+      if game and not present(self, body) then break end -- (a filter removed the body: the move ends)
+      if not found then
         body:translate(dx, dy)
         x, y = goalX, goalY
         break
@@ -539,9 +561,9 @@ function Space:move(body, goalX, goalY, filterFn, opts)
           .. ' added with addResponse)'):format(F, describe(name)))
       end
       local fx, fy, gx, gy
-      if name == 'slide' and opts and walkable(nx, ny) then
-        fx, fy, gx, gy = groundSlide(col, goalX, goalY)
-      elseif name == 'slide' and stepH > 0 and not walkable(nx, ny) then
+      if name == 'slide' and character and walkable(level, nx, ny) then
+        fx, fy, gx, gy = groundSlide(level, col, goalX, goalY)
+      elseif name == 'slide' and stepH > 0 and not walkable(level, nx, ny) then
         local rx, ry = goalX - tx, goalY - ty
         local ru = rx * upX + ry * upY
         local hx, hy = rx - ru * upX, ry - ru * upY
@@ -567,13 +589,14 @@ function Space:move(body, goalX, goalY, filterFn, opts)
         if (c > 1e-9 or c < -1e-9) and (gx - fx) * pnx + (gy - fy) * pny < 0 then gx, gy = fx, fy end
         pnx, pny = nx, ny
       end
+      if game and not present(self, body) then break end -- (a filter or response removed it)
       if fx ~= x or fy ~= y then body:translate(fx - x, fy - y) end
       x, y, goalX, goalY = fx, fy, gx, gy
     end
-    if snapH > 0 and not rising then -- snap down onto walkable ground
+    if snapH > 0 and not rising and present(self, body) then -- snap down onto walkable ground
       local skin = skinAt(size, x, y)
-      if first(self, level, body, sid, -upX * snapH, -upY * snapH, solidPick, level, true, hit)
-        and not hit.overlapping and walkable(hit.nx, hit.ny) then
+      if first(self, level, body, sid, -upX * snapH, -upY * snapH, solidPick, level, true, hit, nil, 0, game)
+        and not hit.overlapping and walkable(level, hit.nx, hit.ny) then
         local ts = hit.t - skin / snapH
         if ts > 0 then
           body:translate(-upX * snapH * ts, -upY * snapH * ts)
@@ -586,13 +609,12 @@ function Space:move(body, goalX, goalY, filterFn, opts)
         hit.body, hit.pick = nil, nil
       end
     end
-    leave(self)
+    leave(self, level)
     if cache then self._mover = 0 end
     level.filter, level.body, level.visited, level.sid = false, false, false, false
     for i = 1, k do visited[cols[i].other] = nil end
   end
   local spare = cols.spare
-  upX, upY, walkCos, snapH, stepH = oUpX, oUpY, oWalkCos, oSnapH, oStepH
   for i = #cols, k + 1, -1 do -- (kept for a longer list later, without the body they named)
     local col = cols[i]
     col.other = false
@@ -600,6 +622,55 @@ function Space:move(body, goalX, goalY, filterFn, opts)
     cols[i] = nil
   end
   return x, y, cols, k
+end
+
+--- Move a body of this space so that its centroid goes toward (goalX, goalY), resolving what
+--- it meets on the way (see the header): returns the centroid it reached, the list of
+--- collisions in the order they happened and their count. `filter(body, other)` returns a
+--- response name for each other body ('slide', the default without a filter; 'touch',
+--- 'cross', 'bounce', or one added with addResponse), or nil to pass through it unreported.
+--- Each collision is `{other =, type =, t =, nx =, ny =, touchX =, touchY =, x =, y =,
+--- overlapping =}`: t the fraction of its leg at the touch, (nx, ny) the unit normal from
+--- other toward body, (touchX, touchY) the centroid where the body touched, (x, y) the
+--- contact point. The list and its records are reused by the next move. The filter and the
+--- responses may add, remove, move and query other bodies (README, "The space"); a body
+--- they remove is not met after; removing the body being moved ends the move there, and
+--- moving it is an error.
+--- Options for characters (README, "Characters"): `up` (a direction {x, y}; default {0, -1},
+--- up on a LÖVE screen), `slope` (the steepest walkable slope, radians: on walkable ground a
+--- slide keeps the motion across `up` and never slides down), `snap` (a move that does not
+--- go up ends on walkable ground within this distance below, when there is some: no hops
+--- down a slope or a stair), `step` (a slide into a wall first tries to climb a ledge up to
+--- this high).
+---@param body strike.Collider|strike.Shape
+---@param goalX number
+---@param goalY number
+---@param filterFn function|nil
+---@param opts table|nil
+---@return number actualX
+---@return number actualY
+---@return table collisions
+---@return integer count
+function Space:move(body, goalX, goalY, filterFn, opts)
+  local F = 'strike.Space:move'
+  if not isSpace(self) then badSelf(self, F) end
+  local sid = idOf(self, F, body)
+  if not (finite(goalX) and finite(goalY)) then
+    check.number(goalX, F, 'argument 2 (goalX)')
+    check.number(goalY, F, 'argument 3 (goalY)')
+  end
+  if filterFn ~= nil and type(filterFn) ~= 'function' then
+    fail(('%s: argument 4 (filter) must be a function (body, other) -> response name or nil, got %s'):format(F,
+      what(filterFn)))
+  end
+  local upX, upY, walkCos, snapH, stepH = readOptions(F, opts)
+  -- (the game's code runs in the move when it has a filter or the space a pair filter)
+  local game = filterFn ~= nil or self._pairFilter and true or false
+  local character = opts ~= nil -- (the walkable-ground slide: README, "Characters")
+  if game and not self._guard then
+    return protect(self, moveOf, body, sid, goalX, goalY, filterFn, upX, upY, walkCos, snapH, stepH, character, game)
+  end
+  return moveOf(self, body, sid, goalX, goalY, filterFn, upX, upY, walkCos, snapH, stepH, character, game)
 end
 
 return Space

@@ -79,6 +79,9 @@ function Tree.new()
     fx0 = {}, fy0 = {}, fx1 = {}, fy1 = {}, -- the fat box the leaf has or will have
     pending = {}, -- NONE, MOVED (the leaf's box is stale) or NEW (not in the tree yet)
     idTop = 0, live = 0, frame = 1,
+    -- changes whenever a leaf is inserted, removed or moved in the tree: a walk of it that
+    -- calls out (rayVisit's visitor) can tell the tree changed meanwhile
+    version = 0,
     freeIds = {}, nFreeIds = 0, -- the free ids, a stack
     moved = {}, nMoved = 0, -- the move buffer
     stale = {}, nStale = 0, -- the proxies whose leaves await flush (pending ~= NONE)
@@ -522,6 +525,7 @@ end
 local function flush(self)
   local n = self.nStale
   if n == 0 then return end
+  self.version = self.version + 1
   local stale, pending, leafOf = self.stale, self.pending, self.leaf
   local fx0, fy0, fx1, fy1 = self.fx0, self.fy0, self.fx1, self.fy1
   local x0, y0, x1, y1 = self.nx0, self.ny0, self.nx1, self.ny1
@@ -678,6 +682,7 @@ end
 function Tree:remove(id)
   local leaf = checkId(self, 'remove', id)
   pushMoved(self, id) -- (its kept pairs become stale)
+  self.version = self.version + 1
   if self.pending[id] ~= NEW then removeLeaf(self, leaf) end
   self.pending[id] = NONE
   freeNode(self, leaf)
