@@ -33,6 +33,14 @@ function Rectangle:new(x, y, dx, dy, angle, radius)
   check.positive(dy, 'strike.Rectangle', 'height')
   angle = check.optNumber(angle, 'strike.Rectangle', 'angle', 0)
   local hx, hy = dx / 2, dy / 2
+  if x - hx == x + hx or y - hy == y + hy then
+    -- (its corners round to the same coordinates there: a size below the spacing of doubles
+    -- at that position, not a degenerate outline)
+    check.fail(('strike.Rectangle: a %s by %s rectangle cannot be told from a point at (%s, %s): its corners round'
+      .. ' to the same coordinates, doubles there being about %s apart; move it nearer the origin or make it'
+      .. ' larger'):format(check.describe(dx), check.describe(dy), check.describe(x), check.describe(y),
+      ('%.2g'):format(math.max(math.abs(x), math.abs(y)) * 2 ^ -52)))
+  end
   self.dx, self.dy = dx, dy
   if radius ~= nil then
     ConvexPolygon._checkRounding('strike.Rectangle', radius)

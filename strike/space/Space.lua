@@ -252,8 +252,13 @@ local OPTIONS = { layer = true, mask = true, group = true, sensor = true }
 -- (mask: a set, or false for `mask = false`: every layer).
 local function options(fname, opts)
   if opts == nil then return nil, nil, nil, nil end
-  if type(opts) ~= 'table' or getmetatable(opts) ~= nil then
+  if type(opts) ~= 'table' then
     fail(('%s: argument 2 (options) must be a table such as {layer = \'wall\'}, got %s'):format(fname, what(opts)))
+  end
+  if getmetatable(opts) ~= nil then
+    local w = what(opts)
+    fail(('%s: argument 2 (options) must be a plain table such as {layer = \'wall\'}, got %s')
+      :format(fname, w == 'table' and 'a table with a metatable' or w))
   end
   for k in pairs(opts) do
     if not OPTIONS[k] then

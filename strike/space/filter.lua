@@ -72,18 +72,31 @@ end
 ---@param i integer the argument's position, for the message
 function filter.checkQuery(f, fname, i)
   if f == nil or type(f) == 'function' then return end
-  if type(f) == 'table' and getmetatable(f) == nil and type(f.mask) == 'table' then
+  if type(f) == 'table' and getmetatable(f) == nil then
     local m = f.mask
-    for j = 1, #m do
-      if type(m[j]) ~= 'string' then
-        fail(('%s: argument %d (filter): mask[%d] must be a layer name (a string), got %s'):format(fname, i, j,
-          describe(m[j])))
+    if type(m) == 'table' then
+      for j = 1, #m do
+        if type(m[j]) ~= 'string' then
+          fail(('%s: argument %d (filter): mask[%d] must be a layer name (a string), got %s'):format(fname, i, j,
+            describe(m[j])))
+        end
       end
+      return
     end
-    return
+    if m ~= nil then
+      fail(('%s: argument %d (filter): mask must be a list of layer names such as {%s}, got %s'):format(fname, i,
+        type(m) == 'string' and ('%q'):format(m) or "'wall'", describe(m)))
+    end
+    local key = next(f)
+    if key ~= nil then
+      fail(('%s: argument %d (filter): a layer filter is {mask = {layer names}}, got a table with the key %s and no'
+        .. ' mask'):format(fname, i, type(key) == 'string' and ('%q'):format(key) or describe(key)))
+    end
+    fail(('%s: argument %d (filter): a layer filter is {mask = {layer names}}, got an empty table'):format(fname, i))
   end
   fail(('%s: argument %d (filter) must be nil, a function (body) -> boolean or a table {mask = {layer names}},'
-    .. ' got %s'):format(fname, i, check.what(f)))
+    .. ' got %s'):format(fname, i, type(f) == 'table' and getmetatable(f) ~= nil and check.what(f) == 'table'
+    and 'a table with a metatable' or check.what(f)))
 end
 
 --- Does the query filter `f` (checked) let a body on layer `layer` through?

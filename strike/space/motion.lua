@@ -367,8 +367,9 @@ local function readOptions(F, opts)
       :format(F, what(opts)))
   end
   if getmetatable(opts) ~= nil then
+    local w = what(opts)
     fail(('%s: argument 5 (options) must be a plain table such as {slope = math.rad(50), snap = 4, step = 8},'
-      .. ' got %s with a metatable'):format(F, what(opts)))
+      .. ' got %s'):format(F, w == 'table' and 'a table with a metatable' or w))
   end
   for key in pairs(opts) do
     if not OPTS[key] then fail(('%s: unknown option %s (options are up, slope, snap and step)'):format(F,
