@@ -235,3 +235,117 @@ describe('Space:move past the open end of a one-way chain', function()
     near(cols[1].ny, -1 / sqrt(2), 1e-9)
   end)
 end)
+
+describe('Space:move and its legs', function()
+  -- N walls 1 wide at x = 10 + 2i (i = 1 .. N), 20 tall; a 4 x 4 box from x = 0 to the far
+  -- side of the last.
+  local function corridor(N)
+    local sp = S.pace()
+    local walls = {}
+    for i = 1, N do walls[i] = sp:add(H.Rectangle(10 + 2 * i, 0, 1, 20)) end
+    return sp, walls, sp:add(H.Rectangle(0, 0, 4, 4))
+  end
+  local function crossing() return 'cross' end
+
+  it('\'cross\' passes through 63, 64, 65 and 1,000 bodies in one move, each reported in order', function()
+    for _, N in ipairs({ 63, 64, 65, 1000 }) do
+      local sp, walls, box = corridor(N)
+      local goal = 20 + 2 * N
+      local ax, ay, cols, n = sp:move(box, goal, 0, crossing)
+      assert(ax == goal and ay == 0, ('%d bodies: stopped at (%.17g, %.17g)'):format(N, ax, ay))
+      assert.equal(N, n)
+      local lastT = -1
+      for i = 1, N do
+        local col = cols[i]
+        assert(col.other == walls[i] and col.type == 'cross', ('%d bodies: collision %d out of order'):format(N, i))
+        -- the box's right face (x = 2) meets wall i's left face (x = 9.5 + 2i): t = (7.5 + 2i) / goal
+        near(col.t, (7.5 + 2 * i) / goal, 1e-12, ('%d bodies: t of %d'):format(N, i))
+        assert(col.t > lastT)
+        lastT = col.t
+      end
+      local x = box:getCentroid()
+      assert.equal(goal, x)
+    end
+  end)
+
+  it('passes through bodies with a response of the game\'s that keeps the leg, any number of them', function()
+    local sp, walls, box = corridor(300)
+    local count = 0
+    sp:addResponse('pickup', function(_, _, x, y, gx, gy)
+      count = count + 1
+      return x, y, gx, gy
+    end)
+    local ax, _, cols, n = sp:move(box, 620, 0, function() return 'pickup' end)
+    assert.equal(620, ax)
+    assert.equal(300, n)
+    assert.equal(300, count)
+    assert.equal(walls[300], cols[300].other)
+  end)
+
+  it('crosses 200 bodies, then slides along a wall to where the slide takes it', function()
+    -- the walls as above (up to x = 410), then a wall whose left face is x = 500; the box
+    -- moves from (0, 0) toward (600, 10): it crosses every wall on the way (its bottom is
+    -- at most 8.8 there), meets the far wall when its centroid is at x = 498 (y = 8.3), and
+    -- slides down along it to y = 10, a skin short of it
+    local sp, walls, box = corridor(200)
+    local wall = sp:add(H.Rectangle(510, 0, 20, 200))
+    local ax, ay, cols, n = sp:move(box, 600, 10, function(_, other) return other ~= wall and 'cross' or 'slide' end)
+    assert.equal(201, n)
+    for i = 1, 200 do assert(cols[i].other == walls[i] and cols[i].type == 'cross', 'collision ' .. i) end
+    assert(cols[201].other == wall and cols[201].type == 'slide', 'the wall last')
+    near(cols[201].t, 498 / 600, 1e-12)
+    near(ay, 10, 1e-12)
+    assert(ax < 498 and ax > 498 - 1e-3, 'not a skin short of the wall')
+    assert.is_false(S.triking(box, wall))
+  end)
+
+  -- A corridor between walls x <= 0 and x >= 12 (1,000,000 tall), and a 2 x 2 box at x = 6:
+  -- its centroid moves in [1, 11], so a move right by 10 k + 5 and down by 10 k meets a wall
+  -- every 10 of its x motion: bouncing, k times (the skin aside).
+  local function bounces(k)
+    local sp = S.pace()
+    local left = sp:add(H.Rectangle(-5, 0, 10, 1e6))
+    local right = sp:add(H.Rectangle(17, 0, 10, 1e6))
+    local box = sp:add(H.Rectangle(6, 0, 2, 2))
+    local x, y, cols, n = sp:move(box, 6 + 10 * k, 10 * k, function() return 'bounce' end)
+    return x, y, cols, n, box, left, right
+  end
+
+  it('caps the legs that turn a move at 64: the 65th stops there, a skin short of what it met', function()
+    -- 64 bounces: the move ends at its goal, (6, 640) (k even: back at x = 6, give or
+    -- take a skin per bounce)
+    local x, y, _, n = bounces(64)
+    assert.equal(64, n)
+    near(x, 6, 1e-3)
+    near(y, 640, 1e-9)
+    -- 65 and more: the 65th bounce is met and reported, and the body stops at its touch:
+    -- x = 11 less a skin, y = 645 (the 65th wall met after 645 of the x motion's 650)
+    for _, k in ipairs({ 65, 66, 200 }) do
+      local bx, by, cols, bn, box, left, right = bounces(k)
+      assert.equal(65, bn)
+      assert.equal('bounce', cols[65].type)
+      assert.equal(right, cols[65].other)
+      assert(bx < 11 and bx > 11 - 1e-3, 'not a skin short of the wall')
+      near(by, 645, 1e-3)
+      assert.is_false(S.triking(box, right))
+      assert.is_false(S.triking(box, left))
+      assert.equal(bx, (box:getCentroid()))
+    end
+  end)
+
+  it('does not count the bodies crossed against the cap', function()
+    -- 64 bounces and 100 bodies crossed in one move: the goal
+    local sp = S.pace()
+    sp:add(H.Rectangle(-5, 0, 10, 1e6))
+    sp:add(H.Rectangle(17, 0, 10, 1e6))
+    local coins = {}
+    for i = 1, 100 do coins[sp:add(H.Rectangle(6, 3 + 6 * i, 12, 1))] = true end
+    local box = sp:add(H.Rectangle(6, 0, 2, 2))
+    local _, y, cols, n = sp:move(box, 646, 640, function(_, other) return coins[other] and 'cross' or 'bounce' end)
+    assert.equal(164, n)
+    near(y, 640, 1e-9)
+    local crossed = 0
+    for i = 1, n do if cols[i].type == 'cross' then crossed = crossed + 1 end end
+    assert.equal(100, crossed)
+  end)
+end)

@@ -17,7 +17,9 @@
 ---     touched (a leg that slides along a surface then never meets the seams of the tiles
 ---     that make it);
 ---  3. the response (Space:addResponse) gives where the next leg starts and its goal; a
----     slide that turns back into the surface slid along just before (a corner) stops.
+---     slide that turns back into the surface slid along just before (a corner) stops. At
+---     most MAX_LEGS legs turn the move; those that pass a body and go on unchanged
+---     ('cross') are not counted, so a move crosses any number of bodies.
 --- The candidates of a leg are kept for the next legs and moves while nothing else in the
 --- space moves (Space.lua's _version), in a box padded by the body's radius and the move's
 --- length; the body's own place in the broadphase waits for the next query that needs it.
@@ -424,6 +426,15 @@ local function stepUp(self, level, body, sid, hx, hy, skin)
   return false
 end
 
+-- The most legs of a move that slide, touch or bounce, or that a response turns (a new start
+-- or goal). At one more (a body bouncing between two walls with a long move, or a game's
+-- response that keeps turning it), the body stops where that leg's response put it (for
+-- the built-in ones the touch, a skin short of what it met: the last safe point), and the
+-- collision is reported. Legs that go on unchanged past a body ('cross', or a game's
+-- response that returns the leg as it was) do not count: each passes a body that the move
+-- then never meets again, so they end, and a move crosses any number of bodies.
+local MAX_LEGS = 64
+
 --- Move a body of this space so that its centroid goes toward (goalX, goalY), resolving what
 --- it meets on the way (see the header): returns the centroid it reached, the list of
 --- collisions in the order they happened and their count. `filter(body, other)` returns a
@@ -505,7 +516,10 @@ function Space:move(body, goalX, goalY, filterFn, opts)
       self._mover = sid
     end
     local pnx, pny = 0, 0 -- (the normal of the last surface slid along)
-    for _ = 1, 64 do
+    -- The legs that turn the move (see MAX_LEGS); a leg that passes a body through and goes
+    -- on unchanged ('cross') costs none: each passes a new body, so they end.
+    local legs = 0
+    while true do
       local dx, dy = goalX - x, goalY - y
       if dx == 0 and dy == 0 then break end
       if not first(self, level, body, sid, dx, dy, movePick, level, true, hit, cache, pad) then
@@ -566,6 +580,10 @@ function Space:move(body, goalX, goalY, filterFn, opts)
         local c = pnx * ny - pny * nx
         if (c > 1e-9 or c < -1e-9) and (gx - fx) * pnx + (gy - fy) * pny < 0 then gx, gy = fx, fy end
         pnx, pny = nx, ny
+      end
+      if fx ~= x or fy ~= y or gx ~= goalX or gy ~= goalY or not visited[col.other] then
+        legs = legs + 1
+        if legs > MAX_LEGS then gx, gy = fx, fy end -- (the cap: it stops where this leg took it)
       end
       if fx ~= x or fy ~= y then body:translate(fx - x, fy - y) end
       x, y, goalX, goalY = fx, fy, gx, gy
