@@ -349,3 +349,92 @@ describe('Space:move and its legs', function()
     assert.equal(100, crossed)
   end)
 end)
+
+describe('Space:move options at their boundaries', function()
+  -- a floor whose top is y = 100 and a 20 x 20 box resting on it (bottom 0.001 above)
+  local function world()
+    local sp = S.pace()
+    sp:add(H.Rectangle(0, 110, 400, 20))
+    return sp, sp:add(H.Rectangle(0, 90 - 1e-3, 20, 20))
+  end
+
+  -- the results of one move with `opts`: x, y, then each collision's normal
+  local function run(opts)
+    local sp, box = world()
+    local x, y, cols, n = sp:move(box, 10, 95, nil, opts)
+    local out = { x, y, n }
+    for i = 1, n do out[#out + 1], out[#out + 2] = cols[i].nx, cols[i].ny end
+    -- (the space is sound: the box is found where it is)
+    local hits = sp:queryPoint(x, y)
+    assert(hits[1] == box, 'the box is lost from the space')
+    return out
+  end
+
+  it('takes an up of any finite length but zero, as its direction', function()
+    local slope = rad(50)
+    local straight = run({ up = { 0, -1 }, slope = slope, snap = 4 })
+    -- squares that underflow (1e-200, the smallest subnormal) and that overflow (1e200, 1e308)
+    for _, up in ipairs({ { 0, -1e-200 }, { 0, -5e-324 }, { 0, -1e200 }, { 0, -1.7e308 }, { 0, -3 } }) do
+      assert.same(straight, run({ up = up, slope = slope, snap = 4 }))
+    end
+    local diagonal = run({ up = { 1, -1 }, slope = slope, snap = 4 })
+    for _, up in ipairs({ { 1e-200, -1e-200 }, { 5e-324, -5e-324 }, { 1e300, -1e300 }, { 1.5e308, -1.5e308 } }) do
+      local got = run({ up = up, slope = slope, snap = 4 })
+      assert.equal(#diagonal, #got)
+      for i = 1, #got do near(got[i], diagonal[i], 1e-12) end
+    end
+    -- and a component 1e-308 beside 1e308: the direction is (0, -1) to round-off
+    local tiny = run({ up = { 1e-308, -1e308 }, slope = slope, snap = 4 })
+    for i = 1, #tiny do near(tiny[i], straight[i], 1e-12) end
+  end)
+
+  it('names what is wrong with a bad up', function()
+    local sp, box = world()
+    local F = 'strike.Space:move: up must be a direction {x, y}'
+    local N = F .. ' of two finite numbers, got '
+    raisesAt(function() sp:move(box, 1, 1, nil, { up = { 1 / 0, -1 } }) end, N .. '{inf, -1}')
+    raisesAt(function() sp:move(box, 1, 1, nil, { up = { 0, -1 / 0 } }) end, N .. '{0, -inf}')
+    raisesAt(function() sp:move(box, 1, 1, nil, { up = { 0 / 0, 1 } }) end, N .. '{nan, 1}')
+    raisesAt(function() sp:move(box, 1, 1, nil, { up = { 1 } }) end, N .. '{1, nil}')
+    raisesAt(function() sp:move(box, 1, 1, nil, { up = { '0', -1 } }) end, N .. '{string "0", -1}')
+    raisesAt(function() sp:move(box, 1, 1, nil, { up = { 0, 0 } }) end, F .. ', not {0, 0}')
+    raisesAt(function() sp:move(box, 1, 1, nil, { up = { -0.0, 0 } }) end, F .. ', not {0, 0}')
+    raisesAt(function() sp:move(box, 1, 1, nil, { up = 'down' }) end, F .. ', got string "down"')
+    raisesAt(function() sp:move(box, 1, 1, nil, { up = -1 }) end, F .. ', got -1')
+  end)
+
+  it('takes a slope from 0 to just under pi / 2', function()
+    local sp, box = world()
+    local F = 'strike.Space:move: slope must be an angle in radians from 0 to less than pi / 2, got '
+    raisesAt(function() sp:move(box, 1, 1, nil, { slope = pi / 2 }) end, F .. pi / 2)
+    raisesAt(function() sp:move(box, 1, 1, nil, { slope = -1e-300 }) end, F .. '-1e-300')
+    raisesAt(function() sp:move(box, 1, 1, nil, { slope = 0 / 0 }) end, F .. 'nan')
+    raisesAt(function() sp:move(box, 1, 1, nil, { slope = 1 / 0 }) end, F .. 'inf')
+    -- the largest double below pi / 2, 0 and a tiny one work; a flat floor is walkable at
+    -- each (the box stands: its x motion kept, its y motion dropped)
+    local below = pi / 2 - 2 ^ -52
+    assert(below < pi / 2)
+    for _, slope in ipairs({ below, 0, 1e-300 }) do
+      local got = run({ slope = slope })
+      near(got[1], 10, 0)
+      assert(got[2] < 90 and got[2] > 90 - 1e-3, 'slope ' .. slope .. ': not a skin above the floor')
+    end
+  end)
+
+  it('takes snap and step heights from 0 to 1e100', function()
+    local sp, box = world()
+    for _, key in ipairs({ 'snap', 'step' }) do
+      local F = 'strike.Space:move: ' .. key .. ' must be a length from 0 to 1e+100, got '
+      for _, bad in ipairs({ -1e-300, 1e100 * (1 + 2 ^ -52), 1e300, 1 / 0, 0 / 0 }) do
+        raisesAt(function() sp:move(box, 1, 1, nil, { [key] = bad }) end, F .. show(bad))
+      end
+      raisesAt(function() sp:move(box, 1, 1, nil, { [key] = 'x' }) end, F .. 'string "x"')
+      -- 0, the smallest subnormal and 1e100 work (the box still on the floor)
+      for _, v in ipairs({ 0, 5e-324, 1e100 }) do
+        local got = run({ [key] = v })
+        near(got[1], 10, 0)
+        assert(got[2] < 90 and got[2] > 89.99, key .. ' ' .. v .. ': y ' .. got[2])
+      end
+    end
+  end)
+end)

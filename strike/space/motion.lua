@@ -39,6 +39,8 @@ local layout = require(ROOT .. '.base.layout')
 local DIRTY, MINX, MINY, MAXX, MAXY = layout.DIRTY, layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
 local queryFilter, checkQuery = filter.query, filter.checkQuery
 local fail, describe, what, badSelf, finite = check.fail, check.describe, check.what, check.badSelf, check.finite
+local limits = require(ROOT .. '.limits')
+local unit, MAX_LENGTH = limits.unit, limits.MAX_LENGTH
 local sqrt, abs, huge, type = math.sqrt, math.abs, math.huge, type
 
 local Space = require(ROOT .. '.space.Space')
@@ -319,6 +321,11 @@ end
 local upX, upY, walkCos, snapH, stepH = 0, -1, false, 0, 0
 local OPTS = { up = true, slope = true, snap = true, step = true }
 
+-- The error for a snap or step height that is no length from 0 to MAX_LENGTH.
+local function badLength(F, key, v)
+  fail(('%s: %s must be a length from 0 to %g, got %s'):format(F, key, MAX_LENGTH, describe(v)))
+end
+
 local function readOptions(F, opts)
   upX, upY, walkCos, snapH, stepH = 0, -1, false, 0, 0
   if opts == nil then return end
@@ -332,11 +339,16 @@ local function readOptions(F, opts)
   end
   local up = opts.up
   if up ~= nil then
-    if type(up) ~= 'table' or not (finite(up[1]) and finite(up[2])) or up[1] == 0 and up[2] == 0 then
-      fail(('%s: up must be a direction {x, y} (not {0, 0}), got %s'):format(F, what(up)))
+    if type(up) ~= 'table' then fail(('%s: up must be a direction {x, y}, got %s'):format(F, what(up))) end
+    local ux, uy = up[1], up[2]
+    if not (finite(ux) and finite(uy)) then
+      fail(('%s: up must be a direction {x, y} of two finite numbers, got {%s, %s}'):format(F, describe(ux),
+        describe(uy)))
     end
-    local l = sqrt(up[1] * up[1] + up[2] * up[2])
-    upX, upY = up[1] / l, up[2] / l
+    -- (scaled by the larger component first: {1e-200, 1e-200} squared would underflow to 0)
+    local x, y = unit(ux, uy)
+    if not x then fail(('%s: up must be a direction {x, y}, not {0, 0}'):format(F)) end
+    upX, upY = x, y
   end
   local slope = opts.slope
   if slope ~= nil then
@@ -345,13 +357,11 @@ local function readOptions(F, opts)
     end
     walkCos = math.cos(slope)
   end
-  for _, key in ipairs({ 'snap', 'step' }) do
-    local v = opts[key]
-    if v ~= nil and not (finite(v) and v >= 0) then
-      fail(('%s: %s must be a length >= 0, got %s'):format(F, key, describe(v)))
-    end
-  end
-  snapH, stepH = opts.snap or 0, opts.step or 0
+  local snap, step = opts.snap, opts.step
+  -- (lengths, as a shape's are: at most MAX_LENGTH; 0, or a tiny one, is none)
+  if snap ~= nil and not (finite(snap) and snap >= 0 and snap <= MAX_LENGTH) then badLength(F, 'snap', snap) end
+  if step ~= nil and not (finite(step) and step >= 0 and step <= MAX_LENGTH) then badLength(F, 'step', step) end
+  snapH, stepH = snap or 0, step or 0
 end
 
 -- Can the body stand on a surface of normal (nx, ny)? (Any surface facing up when no slope
@@ -444,12 +454,12 @@ local MAX_LEGS = 64
 --- overlapping =}`: t the fraction of its leg at the touch, (nx, ny) the unit normal from
 --- other toward body, (touchX, touchY) the centroid where the body touched, (x, y) the
 --- contact point. The list and its records are reused by the next move.
---- Options for characters (README, "Characters"): `up` (a direction {x, y}; default {0, -1},
---- up on a LÖVE screen), `slope` (the steepest walkable slope, radians: on walkable ground a
---- slide keeps the motion across `up` and never slides down), `snap` (a move that does not
---- go up ends on walkable ground within this distance below, when there is some: no hops
---- down a slope or a stair), `step` (a slide into a wall first tries to climb a ledge up to
---- this high).
+--- Options for characters (README, "Characters"): `up` (a direction {x, y} of any finite
+--- length but 0; default {0, -1}, up on a LÖVE screen), `slope` (the steepest walkable
+--- slope, radians: on walkable ground a slide keeps the motion across `up` and never slides
+--- down), `snap` (a move that does not go up ends on walkable ground within this distance
+--- below, when there is some: no hops down a slope or a stair), `step` (a slide into a wall
+--- first tries to climb a ledge up to this high); snap and step are lengths from 0 to 1e100.
 ---@param body strike.Collider|strike.Shape
 ---@param goalX number
 ---@param goalY number
