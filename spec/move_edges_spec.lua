@@ -4,6 +4,7 @@
 -- length, slope, snap and step). Hand-worked cases; each rule has a case on its boundary.
 local S = require('strike')
 local expect = require('spec.helpers.expect')
+local alloc = require('spec.helpers.alloc')
 local raisesAt, near = expect.raisesAt, expect.near
 local H, T = S.hapes, S.trikers
 local show = require('strike.check').describe
@@ -419,6 +420,21 @@ describe('Space:move options at their boundaries', function()
       near(got[1], 10, 0)
       assert(got[2] < 90 and got[2] > 90 - 1e-3, 'slope ' .. slope .. ': not a skin above the floor')
     end
+  end)
+
+  describe('allocation', function()
+    setup(alloc.jitOff)
+    teardown(alloc.jitOn)
+
+    it('a move with every option allocates nothing (reading them made a table per move)', function()
+      local sp, box = world()
+      local opts = { up = { 0, -1 }, slope = rad(50), snap = 4, step = 3 }
+      local kb = alloc.kbPer(function()
+        box:translateTo(0, 89)
+        sp:move(box, 10, 95, nil, opts)
+      end, 10000)
+      alloc.nothingPerCall(kb, 'Space:move with options')
+    end)
   end)
 
   it('takes snap and step heights from 0 to 1e100', function()
