@@ -53,6 +53,17 @@
 --- chain as smooth to a sweep as to the narrow phase. A leaf already partly through a
 --- segment at the start passes on (a one-way platform jumped into from below). Two chain
 --- segments never meet.
+---
+--- Open ends. An open end (no neighbour) is the edge of a platform, never a wall. It meets
+--- a leaf only when the leaf does not move toward the segment's free side (d . n <= 0: for a
+--- floor, a leaf that does not rise), and then only along a normal tilted toward the free
+--- side, never along the segment's own direction (the end's outward tangent, the far side
+--- of its cone: a hit along it is a leaf meeting the end with a side that reaches across the
+--- line). A leaf falling onto the end from above lands on it (along n, or coming down beyond
+--- the end along a normal of the end's cone: a rounded leaf rests on it or rolls off it); a
+--- leaf jumping up past the end, or beside it with a side across the line, passes it as it
+--- passes a segment it is partly through. (The narrow phase, collide/chain.lua, keeps the
+--- whole cone: it knows no motion.)
 local ROOT = (...):match('^(.-)%.motion%.[^%.]+$')
 local layout = require(ROOT .. '.base.layout')
 local admissible = require(ROOT .. '.collide.chain').admissible
@@ -63,6 +74,8 @@ local HASPREV, HASNEXT, CONVEX1, CONVEX2 = layout.HASPREV, layout.HASNEXT, layou
 local G1X, G1Y, G2X, G2Y = layout.G1X, layout.G1Y, layout.G2X, layout.G2Y
 local P1 = layout.base(1)
 local sqrt, abs, huge = math.sqrt, math.abs, math.huge
+-- chain.lua's slack on the sines of its admissibility tests.
+local CHAIN_TOL = 1e-12
 
 -- A one-vertex core is read at its X, Y slots as if they were a vertex record.
 assert(X + VY == Y, 'motion/kernels.lua: a centre must read as a vertex record')
@@ -370,6 +383,25 @@ local function sharpPoint(A, B, t, dx, dy, ux, uy)
   return ux * line + tx * mid, uy * line + ty * mid
 end
 
+-- Whether the leaf A of the current toi moves toward the free side of the chain segment B
+-- (d . n > 0), B having an open end (see the header, "Open ends"); false for other pairs.
+local awayOpen = false
+
+-- Is the unit normal (mx, my), from chain segment S toward A, one S may push A along?
+-- chain.admissible, and toward an open end (see the header, "Open ends") only strictly
+-- inside its cone (beyond chain.lua's slack from the tangent), and only when A does not
+-- move toward the free side (awayOpen).
+local function chainAllows(S, mx, my)
+  if not admissible(S, mx, my) then return false end
+  local c = S[P1 + NX] * my - S[P1 + NY] * mx -- (< 0 leans toward p1, > 0 toward p2)
+  if c < -CHAIN_TOL and not S[HASPREV] then
+    return not awayOpen and S[G1X] * my - S[G1Y] * mx > CHAIN_TOL -- cross(g1, m)
+  elseif c > CHAIN_TOL and not S[HASNEXT] then
+    return not awayOpen and mx * S[G2Y] - my * S[G2X] > CHAIN_TOL -- cross(m, g2)
+  end
+  return true
+end
+
 -- Sharp pair: false, or true with the hit in `kernels` (B may be a chain segment; A not).
 local function sharpToi(A, B, dx, dy, tol)
   mode, mdx, mdy, tieH = 1, dx, dy, tol
@@ -389,12 +421,14 @@ local function sharpToi(A, B, dx, dy, tol)
     elseif bclass == 3 then
       if btag == 1 then
         if not B[CONVEX1] then return false end
-        if B[HASPREV] then ux, uy = B[G1X], B[G1Y] end
+        if not B[HASPREV] then return false end -- (an open end: never along its tangent)
+        ux, uy = B[G1X], B[G1Y]
       elseif btag == 2 then
         if not B[CONVEX2] then return false end
-        if B[HASNEXT] then ux, uy = B[G2X], B[G2Y] end
+        if not B[HASNEXT] then return false end
+        ux, uy = B[G2X], B[G2Y]
       end
-    elseif not admissible(B, ux, uy) then
+    elseif not chainAllows(B, ux, uy) then
       return false
     end
   end
@@ -470,7 +504,7 @@ local function roundOneWay(P, Q, dx, dy, r, rB, flip, chainSeg)
           if l > 0 then
             nx, ny = nx / l, ny / l
             if flip then nx, ny = -nx, -ny end -- (from B toward A)
-            if not chainSeg or admissible(chainSeg, nx, ny) then
+            if not chainSeg or chainAllows(chainSeg, nx, ny) then
               rt, rnx, rny, rcorner = t, nx, ny, corner
               if flip then rx, ry = px + nx * rB, py + ny * rB else rx, ry = qx + nx * rB, qy + ny * rB end
             end
@@ -497,7 +531,7 @@ local function roundToi(A, B, dx, dy, tol)
     -- exact, and a move along the touching face must not stop)
     -- luacheck: ignore 581 (NaN reads as no hit)
     if not (dx * nx + dy * ny < -APPROACH * sqrt(dx * dx + dy * dy))
-      or (chainSeg and not admissible(chainSeg, nx, ny)) then
+      or (chainSeg and not chainAllows(chainSeg, nx, ny)) then
       return false
     end
     kernels.t, kernels.nx, kernels.ny, kernels.corner = 0, nx, ny, false
@@ -535,6 +569,7 @@ function kernels.toi(A, B, dx, dy, tol)
   if B.kind == 'chain' then -- one-sided: the other leaf's centroid must start in front
     local nx, ny = B[P1 + NX], B[P1 + NY]
     if nx * (A[X] - B[P1]) + ny * (A[Y] - B[P1 + VY]) < 0 then return false end
+    awayOpen = dx * nx + dy * ny > 0 -- (read at open ends only)
   end
   local hit
   if A[R] + B[R] > 0 then hit = roundToi(A, B, dx, dy, tol) else hit = sharpToi(A, B, dx, dy, tol) end

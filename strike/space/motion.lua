@@ -17,7 +17,9 @@
 ---     touched (a leg that slides along a surface then never meets the seams of the tiles
 ---     that make it);
 ---  3. the response (Space:addResponse) gives where the next leg starts and its goal; a
----     slide that turns back into the surface slid along just before (a corner) stops.
+---     slide that turns back into the surface slid along just before (a corner) stops. At
+---     most MAX_LEGS legs turn the move; those that pass a body and go on unchanged
+---     ('cross') are not counted, so a move crosses any number of bodies.
 --- The candidates of a leg are kept for the next legs and moves while nothing else in the
 --- space moves (Space.lua's _version), in a box padded by the body's radius and the move's
 --- length; the body's own place in the broadphase waits for the next query that needs it.
@@ -37,6 +39,8 @@ local layout = require(ROOT .. '.base.layout')
 local DIRTY, MINX, MINY, MAXX, MAXY = layout.DIRTY, layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
 local queryFilter, checkQuery = filter.query, filter.checkQuery
 local fail, describe, what, badSelf, finite = check.fail, check.describe, check.what, check.badSelf, check.finite
+local limits = require(ROOT .. '.limits')
+local unit, MAX_LENGTH = limits.unit, limits.MAX_LENGTH
 local sqrt, abs, huge, type = math.sqrt, math.abs, math.huge, type
 
 local Space = require(ROOT .. '.space.Space')
@@ -360,6 +364,11 @@ end
 -- one that fails leaves the other's as they were.
 local OPTS = { up = true, slope = true, snap = true, step = true }
 
+-- The error for a snap or step height that is no length from 0 to MAX_LENGTH.
+local function badLength(F, key, v)
+  fail(('%s: %s must be a length from 0 to %g, got %s'):format(F, key, MAX_LENGTH, describe(v)))
+end
+
 local function readOptions(F, opts)
   if opts == nil then return 0, -1, false, 0, 0 end
   if type(opts) ~= 'table' then
@@ -378,11 +387,16 @@ local function readOptions(F, opts)
   local upX, upY, walkCos = 0, -1, false
   local up = opts.up
   if up ~= nil then
-    if type(up) ~= 'table' or not (finite(up[1]) and finite(up[2])) or up[1] == 0 and up[2] == 0 then
-      fail(('%s: up must be a direction {x, y} (not {0, 0}), got %s'):format(F, what(up)))
+    if type(up) ~= 'table' then fail(('%s: up must be a direction {x, y}, got %s'):format(F, what(up))) end
+    local ux, uy = up[1], up[2]
+    if not (finite(ux) and finite(uy)) then
+      fail(('%s: up must be a direction {x, y} of two finite numbers, got {%s, %s}'):format(F, describe(ux),
+        describe(uy)))
     end
-    local l = sqrt(up[1] * up[1] + up[2] * up[2])
-    upX, upY = up[1] / l, up[2] / l
+    -- (scaled by the larger component first: {1e-200, 1e-200} squared would underflow to 0)
+    local x, y = unit(ux, uy)
+    if not x then fail(('%s: up must be a direction {x, y}, not {0, 0}'):format(F)) end
+    upX, upY = x, y
   end
   local slope = opts.slope
   if slope ~= nil then
@@ -391,13 +405,11 @@ local function readOptions(F, opts)
     end
     walkCos = math.cos(slope)
   end
-  for _, key in ipairs({ 'snap', 'step' }) do
-    local v = opts[key]
-    if v ~= nil and not (finite(v) and v >= 0) then
-      fail(('%s: %s must be a length >= 0, got %s'):format(F, key, describe(v)))
-    end
-  end
-  return upX, upY, walkCos, opts.snap or 0, opts.step or 0
+  local snap, step = opts.snap, opts.step
+  -- (lengths, as a shape's are: at most MAX_LENGTH; 0, or a tiny one, is none)
+  if snap ~= nil and not (finite(snap) and snap >= 0 and snap <= MAX_LENGTH) then badLength(F, 'snap', snap) end
+  if step ~= nil and not (finite(step) and step >= 0 and step <= MAX_LENGTH) then badLength(F, 'step', step) end
+  return upX, upY, walkCos, snap or 0, step or 0
 end
 
 -- Can the body stand on a surface of normal (nx, ny)? (Any surface facing up when no slope
@@ -475,6 +487,15 @@ local function stepUp(self, level, body, sid, hx, hy, skin)
   return false
 end
 
+-- The most legs of a move that slide, touch or bounce, or that a response turns (a new start
+-- or goal). At one more (a body bouncing between two walls with a long move, or a game's
+-- response that keeps turning it), the body stops where that leg's response put it (for
+-- the built-in ones the touch, a skin short of what it met: the last safe point), and the
+-- collision is reported. Legs that go on unchanged past a body ('cross', or a game's
+-- response that returns the leg as it was) do not count: each passes a body that the move
+-- then never meets again, so they end, and a move crosses any number of bodies.
+local MAX_LEGS = 64
+
 -- The collision list of the level a move runs at (one for moves at the top, another for a
 -- move run from a filter of a query or of another move, and so on), with the marks of the
 -- bodies met and the hit scratch.
@@ -526,7 +547,10 @@ local function moveOf(self, body, sid, goalX, goalY, filterFn, upX, upY, walkCos
       self._mover = sid
     end
     local pnx, pny = 0, 0 -- (the normal of the last surface slid along)
-    for _ = 1, 64 do
+    -- The legs that turn the move (see MAX_LEGS); a leg that passes a body through and goes
+    -- on unchanged ('cross') costs none: each passes a new body, so they end.
+    local legs = 0
+    while true do
       local dx, dy = goalX - x, goalY - y
       if dx == 0 and dy == 0 then break end
       local found = first(self, level, body, sid, dx, dy, movePick, level, true, hit, cache, pad, game)
@@ -591,6 +615,10 @@ local function moveOf(self, body, sid, goalX, goalY, filterFn, upX, upY, walkCos
         pnx, pny = nx, ny
       end
       if game and not present(self, body) then break end -- (a filter or response removed it)
+      if fx ~= x or fy ~= y or gx ~= goalX or gy ~= goalY or not visited[col.other] then
+        legs = legs + 1
+        if legs > MAX_LEGS then gx, gy = fx, fy end -- (the cap: it stops where this leg took it)
+      end
       if fx ~= x or fy ~= y then body:translate(fx - x, fy - y) end
       x, y, goalX, goalY = fx, fy, gx, gy
     end
@@ -637,12 +665,12 @@ end
 --- responses may add, remove, move and query other bodies (README, "The space"); a body
 --- they remove is not met after; removing the body being moved ends the move there, and
 --- moving it is an error.
---- Options for characters (README, "Characters"): `up` (a direction {x, y}; default {0, -1},
---- up on a LÖVE screen), `slope` (the steepest walkable slope, radians: on walkable ground a
---- slide keeps the motion across `up` and never slides down), `snap` (a move that does not
---- go up ends on walkable ground within this distance below, when there is some: no hops
---- down a slope or a stair), `step` (a slide into a wall first tries to climb a ledge up to
---- this high).
+--- Options for characters (README, "Characters"): `up` (a direction {x, y} of any finite
+--- length but 0; default {0, -1}, up on a LÖVE screen), `slope` (the steepest walkable
+--- slope, radians: on walkable ground a slide keeps the motion across `up` and never slides
+--- down), `snap` (a move that does not go up ends on walkable ground within this distance
+--- below, when there is some: no hops down a slope or a stair), `step` (a slide into a wall
+--- first tries to climb a ledge up to this high); snap and step are lengths from 0 to 1e100.
 ---@param body strike.Collider|strike.Shape
 ---@param goalX number
 ---@param goalY number
