@@ -60,6 +60,24 @@ describe('error messages', function()
     end)
   end)
 
+  describe('unknown options', function()
+    it('name the same key whatever pairs order is: the least of several', function()
+      local sp = S.pace()
+      local body = sp:add(T.Rectangle(0, 0, 10, 10))
+      -- (tables built in different orders, many keys: pairs order differs between them)
+      local a, b = {}, {}
+      local names = { 'zeta', 'Layer', 'mass', 'kind', 'tag', 'alpha', 'x', 'y', 'w', 'h' }
+      for i = 1, #names do a[names[i]] = true end
+      for i = #names, 1, -1 do b[names[i]] = true end
+      b[7], a[7] = true, true
+      for _, opts in ipairs({ a, b }) do
+        raisesAt(function() sp:set(body, opts) end, 'strike.Space:set: unknown option string "Layer" (options are')
+        raisesAt(function() sp:move(body, 1, 1, nil, opts) end, 'strike.Space:move: unknown option string "Layer"')
+      end
+      raisesAt(function() sp:move(body, 1, 1, nil, { [2] = 1, [10] = 1 }) end, 'unknown option 2 (options are')
+    end)
+  end)
+
   describe('a rectangle too small for its position', function()
     it('names the size, the position and the spacing of doubles there, not a degenerate outline', function()
       raisesAt(function() H.Rectangle(1e300, 1e300, 1, 1) end,

@@ -105,6 +105,24 @@ function check.badCollider(self, fname)
   check.badSelf(self, fname)
 end
 
+--- The key of table `t` that `known` lacks, the least one when there are several (strings
+--- before other keys, each kind in order), so that an error names the same key whatever
+--- `pairs` order is; nil when `known` has every key.
+---@param t table
+---@param known table
+---@return any
+function check.unknownKey(t, known)
+  local best, bestRank
+  for k in pairs(t) do
+    if not known[k] then
+      local rank = (type(k) == 'string' and '1' or type(k) == 'number' and '2' or '3' .. type(k)) .. ':'
+        .. (type(k) == 'number' and ('%024.6f'):format(k) or tostring(k))
+      if not best or rank < bestRank then best, bestRank = k, rank end
+    end
+  end
+  return best
+end
+
 ---@param v any
 ---@return boolean
 local function finite(v)

@@ -260,10 +260,9 @@ local function options(fname, opts)
     fail(('%s: argument 2 (options) must be a plain table such as {layer = \'wall\'}, got %s')
       :format(fname, w == 'table' and 'a table with a metatable' or w))
   end
-  for k in pairs(opts) do
-    if not OPTIONS[k] then
-      fail(('%s: unknown option %s (options are layer, mask, group and sensor)'):format(fname, describe(k)))
-    end
+  local unknown = check.unknownKey(opts, OPTIONS)
+  if unknown ~= nil then
+    fail(('%s: unknown option %s (options are layer, mask, group and sensor)'):format(fname, describe(unknown)))
   end
   local layer, mask, group, sensor = opts.layer, opts.mask, opts.group, opts.sensor
   if layer ~= nil and type(layer) ~= 'string' then

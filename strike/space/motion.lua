@@ -380,9 +380,9 @@ local function readOptions(F, opts)
     fail(('%s: argument 5 (options) must be a plain table such as {slope = math.rad(50), snap = 4, step = 8},'
       .. ' got %s'):format(F, w == 'table' and 'a table with a metatable' or w))
   end
-  for key in pairs(opts) do
-    if not OPTS[key] then fail(('%s: unknown option %s (options are up, slope, snap and step)'):format(F,
-      describe(key))) end
+  local unknown = check.unknownKey(opts, OPTS)
+  if unknown ~= nil then
+    fail(('%s: unknown option %s (options are up, slope, snap and step)'):format(F, describe(unknown)))
   end
   local upX, upY, walkCos = 0, -1, false
   local up = opts.up
