@@ -136,11 +136,15 @@ local function checkMTV(fname, mtv)
   end
 end
 
---- Contact points of a collision (see "Contacts" in the README): a list of 1 or 2 points
---- `{x =, y =, depth =, id =, colliderShape =, collidedShape =}` (the shapes whose features
---- touch) with `count` and the normal `nx, ny` (the MTV's direction),
---- or nil for a separating MTV. Each point lies midway between the two surfaces; `id`
---- names the features that touch and stays the same while they do. The points describe
+--- Contact points of a collision (see "Contacts" in the README): a list of points
+--- `{x =, y =, depth =, id =, nx =, ny =, colliderShape =, collidedShape =}` (the shapes whose
+--- features touch, and the point's unit normal from the first toward the second) with
+--- `count` and `nx, ny` (the MTV's direction), or nil for a separating MTV. Between two
+--- shapes: 1 or 2 points, midway between the two surfaces, with the MTV's normal. Between
+--- bodies with several members: every member pair that touches once the second body has
+--- moved by the MTV gives up to 2 points where it touches then (on both surfaces), with its
+--- own face normal and depth along it. `id` names the features that touch and stays the
+--- same while they do. The points describe
 --- the shapes as they are when S.ite is called: when either shape has moved since the MTV
 --- was computed, the pair is tested again (nil when it no longer collides; the MTV itself
 --- is left as it is). With `out`, its tables are reused and nothing is allocated once it
@@ -189,11 +193,11 @@ function S.ite(mtv, out)
   local k = ops.contact(a, b, m.nx, m.ny, m.depth, m.edgeIndex, out)
   if k == 0 then return nil end
   if k == 1 and out[2] then out._spare, out[2] = out[2], nil end
-  -- (every point names its pair, as a compound's do: a reused `out` that held a compound's
-  -- points must not keep naming that compound's members)
+  -- (every point names its pair and its normal, as a compound's do: a reused `out` that held
+  -- a compound's points must not keep naming that compound's members)
   for i = 1, k do
     local p = out[i]
-    p.colliderShape, p.collidedShape = a, b
+    p.colliderShape, p.collidedShape, p.nx, p.ny = a, b, m.nx, m.ny
   end
   out.count, out.nx, out.ny = k, m.nx, m.ny
   return out
