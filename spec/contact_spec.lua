@@ -113,6 +113,24 @@ describe('S.ite', function()
     assert.equals(p2, out[2])
   end)
 
+  it('gives every point its normal: between two shapes the MTV\'s, also in an out table a compound filled', function()
+    local out = {}
+    -- a compound's points first: the box [17, 27]^2 in the corner of an L, normals (0, 1), (1, 0)
+    local L = S.trikers.Collider(H.Rectangle(50, 10, 100, 20), H.Rectangle(10, 50, 20, 100))
+    local c = S.ite(S.triking(L, H.Rectangle(22, 22, 10, 10)), out)
+    assert.equals(4, c.count)
+    -- then a circle against a box's corner region: the normal along the centre line (3, 4) / 5
+    c = S.ite(S.AT(H.Rectangle(0, 0, 10), H.Circle(5 + 2.4, 5 + 3.2, 5)), out)
+    assert.equals(1, c.count)
+    near(c.nx, 0.6, 1e-12)
+    near(c.ny, 0.8, 1e-12)
+    assert.equals(c.nx, c[1].nx)
+    assert.equals(c.ny, c[1].ny)
+    -- and two points on a floor, each with the floor's normal (0, -1)
+    c = S.ite(S.AT(floor(), H.Rectangle(0, -4.5, 4, 10)), out)
+    for i = 1, 2 do assert.same({ 0, -1 }, { c[i].nx, c[i].ny }) end
+  end)
+
   it('rejects what is not an MTV from S.AT or S.triking', function()
     raisesAt(function() S.ite(nil) end, 'strike.ite: argument 1 must be an MTV, got nil')
     raisesAt(function() S.ite(S.MTV(1, 0)) end, 'strike.ite: the MTV must come from S.AT or S.triking')

@@ -90,14 +90,21 @@ local function clipFaces(out, k0, Ref, r, rox, roy, I, f, iox, ioy, side, flip, 
   local ik, il = STRIDE * f + BASE, STRIDE * (f < I[COUNT] and f + 1 or 1) + BASE
   local ax, ay, bx, by = I[ik] + iox, I[ik + VY] + ioy, I[il] + iox, I[il + VY] + ioy
   local ca, cb = 0, 1 -- which corner each end is (see the header)
+  local ax0, ay0, bx0, by0 = ax, ay, bx, by
   -- side plane 1: dot(t, p - v1) >= 0
   local lo = tx * v1x + ty * v1y
   ax, ay, bx, by, ca, cb = clip(ax, ay, bx, by, ca, cb, tx * ax + ty * ay - lo, tx * bx + ty * by - lo, 2)
-  if not ax then return 0 end
-  -- side plane 2: dot(t, p - v2) <= 0
-  local hi = tx * v2x + ty * v2y
-  ax, ay, bx, by, ca, cb = clip(ax, ay, bx, by, ca, cb, hi - (tx * ax + ty * ay), hi - (tx * bx + ty * by), 3)
-  if not ax then return 0 end
+  if ax then
+    -- side plane 2: dot(t, p - v2) <= 0
+    local hi = tx * v2x + ty * v2y
+    ax, ay, bx, by, ca, cb = clip(ax, ay, bx, by, ca, cb, hi - (tx * ax + ty * ay), hi - (tx * bx + ty * by), 3)
+  end
+  if not ax then
+    if not depth then return 0 end
+    -- (a compound's pair touches, a corner at an end of the reference face, and round-off
+    -- put the whole incident face past that end: its nearer end, below, and nothing else)
+    ax, ay, bx, by, ca, cb, slack = ax0, ay0, bx0, by0, 0, 1, -huge
+  end
   -- keep what is behind the reference face (rounded shapes: their surfaces are rr in front
   -- of the reference core's face and ri in front of the incident core's, so a point is
   -- kept when its core separation s is below rr + ri, at depth rr + ri - s, midway between
@@ -114,13 +121,16 @@ local function clipFaces(out, k0, Ref, r, rox, roy, I, f, iox, ioy, side, flip, 
     setPoint(out, k, ax + nx * h, ay + ny * h, depth or reach - sa, idBase + ca)
   end
   local sb = nx * bx + ny * by - off
-  if sb < reach + slack then
+  -- (a compound's pair: not the same point twice, where a corner meets a corner)
+  local twice = depth and k > k0 and (bx - ax) * (bx - ax) + (by - ay) * (by - ay) <= slack * slack
+  if sb < reach + slack and not twice then
     k = k + 1
     local h = (rr - ri - sb) / 2
     setPoint(out, k, bx + nx * h, by + ny * h, depth or reach - sb, idBase + cb)
   end
   if k == k0 and depth then
-    -- (a compound's pair touches, yet round-off left both ends in front: the nearer one)
+    -- (a compound's pair touches, yet round-off left both ends in front, or cut both off:
+    -- the nearer one)
     k = k + 1
     if sb < sa then ax, ay, sa, ca = bx, by, sb, cb end
     local h = (rr - ri - sa) / 2

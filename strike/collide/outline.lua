@@ -462,22 +462,25 @@ function outline.resolve(best, l1, n1, l2, n2)
   return best
 end
 
--- How much better aligned with the push b's face must be than a's to be the one a pair
--- touches along, when both pass through the push (a vertex of a sharp difference, or two
--- faces parallel to round-off): the first body's face is kept, as the narrow phase keeps it
--- (collide/sat.lua), so that a pair resting on it keeps its contact ids.
-local PREFER_A = 1e-9
+-- Faces of a and b whose normals are this near (in cosine) are one face to round-off: the
+-- difference may hold them as two edges, or as one (exactly parallel), and which of the two
+-- the push ends on is round-off's choice. The first body's is taken, as the narrow phase
+-- keeps it (collide/sat.lua), so that a pair resting on it keeps its contact ids.
+local PARALLEL = 1e-9
 
 --- Where members a and b (solid, refreshed) touch once b has moved by (tx, ty): nothing
---- (nil) unless they overlap before the move (the origin deeper than `tol` inside their
---- difference) and touch after it (the difference's boundary within `tol` of t). Otherwise
---- the pair's own unit normal (from a toward b) and the feature it touches along:
+--- (nil) unless they touch after the move (the difference's boundary within `tol` of t) and
+--- their depth along the normal below is more than `tol` (a pair the move only slid along,
+--- or brought b to from outside its projection, is touching, not colliding). Otherwise the
+--- pair's own unit normal (from a toward b) and the feature it touches along:
 ---   face > 0: face `face` of a;  face < 0: face -face of b (its normal turned);
 ---   face 0: a rounded corner or a circle: core vertex ia of a against core vertex ib of b
 ---   (1 for a circle's centre), the normal along the line between them (after the move).
---- A face is one whose line (moved out by the radii) passes within `tol` of t; when several
+--- A face is one whose segment (moved out by the radii) passes within `tol` of t; when several
 --- do (at a sharp corner of the difference: a vertex touching a vertex), the one most aligned
---- with the push's direction (ux, uy), a's unless b's is better by PREFER_A. The pair's depth,
+--- with the push's direction (ux, uy), the first found when tied; and when it is b's and a's
+--- face beside it in the difference is parallel to it (within PARALLEL) with its line within
+--- `tol` of t, a's. The pair's depth,
 --- how far its projections on that normal overlap before the move, is normal . t (the
 --- difference's support along its own normal at t), returned third.
 ---@param a strike.Shape
@@ -502,10 +505,8 @@ function outline.feature(a, b, tx, ty, ux, uy, tol)
   addDifference(a, b)
   memberA[1], memberB[1] = false, false -- (strike keeps no shape alive)
   local r = rad[1]
-  -- (apart or only touching before the move: not a contact; NaN neither)
-  if not (coreDistance(1, 0, 0) - r < -tol) then return nil, 0, 0, 0, 0, 0 end -- luacheck: ignore 581
   local gap = coreDistance(1, tx, ty) - r
-  if not (gap <= tol and gap >= -tol) then return nil, 0, 0, 0, 0, 0 end
+  if not (gap <= tol and gap >= -tol) then return nil, 0, 0, 0, 0, 0 end -- (NaN: no)
   local f, last = first[1], first[1] + count[1] - 1
   local best, score, tol2 = 0, -huge, tol * tol
   for k = f, last do
@@ -526,14 +527,28 @@ function outline.feature(a, b, tx, ty, ux, uy, tol)
       end
       if dx * dx + dy * dy <= tol2 then
         local c = nx * ux + ny * uy
-        if esrc[k] > 0 then c = c + PREFER_A end
         if c > score then best, score = k, c end
+      end
+    end
+  end
+  if best > 0 and esrc[best] < 0 then -- (b's face: a's beside it, when one to round-off)
+    local nx, ny = enx[best], eny[best]
+    for q = best - 1, best + 1, 2 do
+      if q < f then q = last elseif q > last then q = f end
+      if esrc[q] > 0 and enx[q] * nx + eny[q] * ny >= 1 - PARALLEL then
+        local off = enx[q] * tx + eny[q] * ty - ed[q] - r
+        if off <= tol and off >= -tol then
+          best = q
+          break
+        end
       end
     end
   end
   if best > 0 then
     local nx, ny = enx[best], eny[best]
-    return nx, ny, nx * tx + ny * ty, esrc[best], 0, 0
+    local depth = nx * tx + ny * ty
+    if not (depth > tol) then return nil, 0, 0, 0, 0, 0 end -- luacheck: ignore 581 (NaN: none)
+    return nx, ny, depth, esrc[best], 0, 0
   end
   -- no face: t is on the arc about the nearest core vertex
   local near2, k = huge, f
@@ -545,7 +560,9 @@ function outline.feature(a, b, tx, ty, ux, uy, tol)
   local d = sqrt(near2)
   local nx, ny = ux, uy -- (t on the vertex itself: only a radius of 0 could, and it has faces)
   if d > 0 then nx, ny = (tx - vx[k]) / d, (ty - vy[k]) / d end
-  return nx, ny, nx * tx + ny * ty, 0, va[k], vb[k]
+  local depth = nx * tx + ny * ty
+  if not (depth > tol) then return nil, 0, 0, 0, 0, 0 end -- luacheck: ignore 581 (NaN: none)
+  return nx, ny, depth, 0, va[k], vb[k]
 end
 
 -- LuaJIT: the search runs interpreted. Its short loops with data-dependent trip counts (a
