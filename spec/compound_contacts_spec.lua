@@ -279,6 +279,23 @@ describe('S.ite on compound MTVs', function()
     end
   end)
 
+  it('a push smaller than the touching tolerance, far from the origin, still gives its points', function()
+    -- tiles [5000, 5032] and [5032, 5064] (x) by [5000, 5032] (y); the box [5012, 5052] x
+    -- [4960, 5000 + d] sunk d = 2^-17 (about 7.6e-6, below the round-off allowed in touching
+    -- at 5,000 from the origin): the push (0, -d); on each tile 2 points on y = 5000, normal
+    -- (0, -1), depth d
+    local d = 2 ^ -17
+    local t1, t2 = H.Rectangle(5016, 5016, 32, 32), H.Rectangle(5048, 5016, 32, 32)
+    local box = H.Rectangle(5032, 4980 + d, 40, 40)
+    local m = S.triking(T.Collider(t1, t2), box)
+    near(m.x, 0, 0)
+    near(m.y, -d, 1e-15)
+    expectPoints(S.ite(m), {
+      { t1, box, 5012, 5000, 0, -1, d }, { t1, box, 5032, 5000, 0, -1, d },
+      { t2, box, 5032, 5000, 0, -1, d }, { t2, box, 5052, 5000, 0, -1, d },
+    }, 1e-12)
+  end)
+
   describe('touching is not colliding: a pair the push slides along gives no points', function()
     -- the tile [0, 32] x [0, 32] and a wall [32, 64] x [-100, 32] beside it; the box
     -- [12, 32 + e] x [-30, 10] is 10 into the tile
@@ -295,18 +312,44 @@ describe('S.ite on compound MTVs', function()
       expectPoints(S.ite(m), { { tile, box, 12, 0, 0, -1, 10 }, { tile, box, 32, 0, 0, -1, 10 } })
     end)
 
-    it('e = 1e-3: 1e-3 into the wall; the push (-1e-3, -10), the wall\'s points 1e-3 deep', function()
-      -- moved, the box [12 - e, 32] x [-40, 0] lies on the tile's top (x from 12 - e to 32)
-      -- and against the wall's face x = 32 (y from -40 to 0; normal (-1, 0), depth e)
-      local e = 1e-3
-      local tile, wall, box, m = scene(e)
-      near(m.x, -e)
-      near(m.y, -10)
-      expectPoints(S.ite(m), {
-        { tile, box, 12 - e, 0, 0, -1, 10 }, { tile, box, 32, 0, 0, -1, 10 },
-        { wall, box, 32, -40, -1, 0, e }, { wall, box, 32, 0, -1, 0, e },
-      }, 1e-9)
+    it('turned, where round-off leaves the box a hair into the wall or off it: still no wall points', function()
+      -- the same scene turned about the origin by many angles and moved far out: the push is
+      -- along the tile's normal, square to the wall's but for round-off
+      local count = 0
+      for k = 1, 90 do
+        local a = k * 0.0698
+        local c, s = math.cos(a), math.sin(a)
+        local ox, oy = 1000 + k * 37.1, -2000 + k * 11.3
+        local function at(x, y) return ox + x * c - y * s, oy + x * s + y * c end
+        local tx, ty = at(16, 16)
+        local wx, wy = at(48, -34)
+        local bx, by = at(22, -10)
+        local tile, wall = H.Rectangle(tx, ty, 32, 32, a), H.Rectangle(wx, wy, 32, 132, a)
+        local box = H.Rectangle(bx, by, 20, 40, a)
+        local m = S.triking(T.Collider(tile, wall), box)
+        local cts = S.ite(m)
+        for i = 1, cts.count do
+          assert(cts[i].colliderShape == tile,
+            ('angle %.17g: a point on the wall, depth %.17g'):format(a, cts[i].depth))
+          count = count + 1
+        end
+      end
+      assert.equals(180, count)
     end)
+
+    for _, e in ipairs({ 1e-3, 1e-6 }) do
+      it(('e = %g: e into the wall; the push (-e, -10), the wall\'s points e deep'):format(e), function()
+        -- moved, the box [12 - e, 32] x [-40, 0] lies on the tile's top (x from 12 - e to 32)
+        -- and against the wall's face x = 32 (y from -40 to 0; normal (-1, 0), depth e)
+        local tile, wall, box, m = scene(e)
+        near(m.x, -e, 1e-12)
+        near(m.y, -10)
+        expectPoints(S.ite(m), {
+          { tile, box, 12 - e, 0, 0, -1, 10 }, { tile, box, 32, 0, 0, -1, 10 },
+          { wall, box, 32, -40, -1, 0, e }, { wall, box, 32, 0, -1, 0, e },
+        }, 1e-9)
+      end)
+    end
   end)
 
   it('depth is never more than the MTV\'s length, even where round-off makes n . t exceed it', function()

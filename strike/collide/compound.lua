@@ -158,6 +158,10 @@ function compound.collide(body1, body2, out)
   return stamp(out, r1, r2)
 end
 
+-- A member pair whose depth along its own normal is at most this fraction of the push's
+-- length only slid along the push: touching, not colliding, and no contact.
+local SLIDE = 1e-9
+
 -- The sum over the leaves (refreshed here) of their extent and distance from the origin:
 -- the size of round-off in the contacts' tests.
 local function sizes(list, n)
@@ -188,6 +192,9 @@ function compound.contacts(m, l1, n1, l2, n2, out)
   local tx, ty, ux, uy, len = m.x, m.y, m.nx, m.ny, m.depth
   local scale = (abs(tx) + abs(ty) + sizes(l1, n1) + sizes(l2, n2)) / (n1 + n2)
   local tol = 1e3 * outline.TOL * scale -- (the push was computed with round-off of its own)
+  -- (a pair the push slides along has a depth of 0 but for round-off, of the push's size; the
+  -- touching tolerance, of the scene's, can be larger than a small push)
+  local minDepth = SLIDE * len
   local count = 0
   for i = 1, n1 do
     local a = l1[i]
@@ -195,7 +202,7 @@ function compound.contacts(m, l1, n1, l2, n2, out)
       for j = 1, n2 do
         local b = l2[j]
         if solid(b) then
-          local nx, ny, depth, face, ia, ib = feature(a, b, tx, ty, ux, uy, tol)
+          local nx, ny, depth, face, ia, ib = feature(a, b, tx, ty, ux, uy, tol, minDepth)
           if nx then
             if depth > len then depth = len end -- (n . t, |n| = 1 to round-off)
             local k = pushed(a, b, tx, ty, nx, ny, depth, face, ia, ib, tol, out, count)

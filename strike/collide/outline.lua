@@ -470,9 +470,9 @@ local PARALLEL = 1e-9
 
 --- Where members a and b (solid, refreshed) touch once b has moved by (tx, ty): nothing
 --- (nil) unless they touch after the move (the difference's boundary within `tol` of t) and
---- their depth along the normal below is more than `tol` (a pair the move only slid along,
---- or brought b to from outside its projection, is touching, not colliding). Otherwise the
---- pair's own unit normal (from a toward b) and the feature it touches along:
+--- their depth along the normal below is more than `minDepth` (a pair the move only slid
+--- along, or brought b to from beside it, is touching, not colliding). Otherwise the pair's
+--- own unit normal (from a toward b) and the feature it touches along:
 ---   face > 0: face `face` of a;  face < 0: face -face of b (its normal turned);
 ---   face 0: a rounded corner or a circle: core vertex ia of a against core vertex ib of b
 ---   (1 for a circle's centre), the normal along the line between them (after the move).
@@ -480,9 +480,9 @@ local PARALLEL = 1e-9
 --- do (at a sharp corner of the difference: a vertex touching a vertex), the one most aligned
 --- with the push's direction (ux, uy), the first found when tied; and when it is b's and a's
 --- face beside it in the difference is parallel to it (within PARALLEL) with its line within
---- `tol` of t, a's. The pair's depth,
---- how far its projections on that normal overlap before the move, is normal . t (the
---- difference's support along its own normal at t), returned third.
+--- `tol` of t, a's. The pair's depth, how far its projections on that normal overlap before
+--- the move, is normal . t (the difference's support along its own normal at t), returned
+--- third.
 ---@param a strike.Shape
 ---@param b strike.Shape
 ---@param tx number
@@ -490,13 +490,14 @@ local PARALLEL = 1e-9
 ---@param ux number
 ---@param uy number
 ---@param tol number
+---@param minDepth number
 ---@return number|nil nx
 ---@return number ny
 ---@return number depth
 ---@return integer face
 ---@return integer ia
 ---@return integer ib
-function outline.feature(a, b, tx, ty, ux, uy, tol)
+function outline.feature(a, b, tx, ty, ux, uy, tol, minDepth)
   if not (a[MAXX] - b[MINX] - tx >= -tol and b[MAXX] + tx - a[MINX] >= -tol
       and a[MAXY] - b[MINY] - ty >= -tol and b[MAXY] + ty - a[MINY] >= -tol) then
     return nil, 0, 0, 0, 0, 0
@@ -547,7 +548,7 @@ function outline.feature(a, b, tx, ty, ux, uy, tol)
   if best > 0 then
     local nx, ny = enx[best], eny[best]
     local depth = nx * tx + ny * ty
-    if not (depth > tol) then return nil, 0, 0, 0, 0, 0 end -- luacheck: ignore 581 (NaN: none)
+    if not (depth > minDepth) then return nil, 0, 0, 0, 0, 0 end -- luacheck: ignore 581 (NaN: none)
     return nx, ny, depth, esrc[best], 0, 0
   end
   -- no face: t is on the arc about the nearest core vertex
@@ -561,7 +562,7 @@ function outline.feature(a, b, tx, ty, ux, uy, tol)
   local nx, ny = ux, uy -- (t on the vertex itself: only a radius of 0 could, and it has faces)
   if d > 0 then nx, ny = (tx - vx[k]) / d, (ty - vy[k]) / d end
   local depth = nx * tx + ny * ty
-  if not (depth > tol) then return nil, 0, 0, 0, 0, 0 end -- luacheck: ignore 581 (NaN: none)
+  if not (depth > minDepth) then return nil, 0, 0, 0, 0, 0 end -- luacheck: ignore 581 (NaN: none)
   return nx, ny, depth, 0, va[k], vb[k]
 end
 
