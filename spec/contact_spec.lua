@@ -113,6 +113,28 @@ describe('S.ite', function()
     assert.equals(p2, out[2])
   end)
 
+  it('keeps #out equal to the count after a compound\'s 4 points, and reuses their tables', function()
+    local out = {}
+    local L = S.trikers.Collider(H.Rectangle(50, 10, 100, 20), H.Rectangle(10, 50, 20, 100))
+    local box = H.Rectangle(22, 22, 10, 10)
+    S.ite(S.triking(L, box), out)
+    assert.equals(4, #out)
+    local tables = {}
+    for i = 1, 4 do tables[out[i]] = true end
+    local function reused(c)
+      for i = 1, c.count do assert(tables[c[i]], 'a new point table') end
+    end
+    local two = S.ite(S.AT(floor(), H.Rectangle(0, -4.5, 4, 10)), out)
+    assert.same({ 2, 2 }, { two.count, #two })
+    reused(two)
+    local one = S.ite(S.AT(floor(), H.Circle(3, -4, 5)), out)
+    assert.same({ 1, 1 }, { one.count, #one })
+    reused(one)
+    local four = S.ite(S.triking(L, box), out)
+    assert.same({ 4, 4 }, { four.count, #four })
+    reused(four)
+  end)
+
   it('gives every point its normal: between two shapes the MTV\'s, also in an out table a compound filled', function()
     local out = {}
     -- a compound's points first: the box [17, 27]^2 in the corner of an L, normals (0, 1), (1, 0)

@@ -100,6 +100,20 @@ local function leavesOf(body, one)
   return one, 1
 end
 
+-- Move the points of a contact list past its count k to out._spares, where the next call's
+-- points are taken from (collide/contact.lua, setPoint): #out is the count, whatever the
+-- list held before, and its tables are reused.
+local function trim(out, k)
+  local n = #out
+  if n > k then
+    local spares = out._spares or {}
+    out._spares = spares
+    for i = n, k + 1, -1 do
+      spares[#spares + 1], out[i] = out[i], nil
+    end
+  end
+end
+
 -- S.ite for bodies with several members (compound.contacts): re-tested when either of the
 -- MTV's shapes moved since.
 local function compoundContacts(mtv, a, b, c1, l1, n1, c2, l2, n2, out)
@@ -111,7 +125,7 @@ local function compoundContacts(mtv, a, b, c1, l1, n1, c2, l2, n2, out)
   if not (m.depth > 0) then return nil end -- luacheck: ignore 581 (NaN reads as no collision)
   out = out or {}
   local k = compound.contacts(m, l1, n1, l2, n2, out)
-  for i = #out, k + 1, -1 do out[i] = nil end
+  trim(out, k)
   if k == 0 then return nil end
   out.count, out.nx, out.ny = k, m.nx, m.ny
   return out
@@ -192,7 +206,7 @@ function S.ite(mtv, out)
   out = out or {}
   local k = ops.contact(a, b, m.nx, m.ny, m.depth, m.edgeIndex, out)
   if k == 0 then return nil end
-  if k == 1 and out[2] then out._spare, out[2] = out[2], nil end
+  trim(out, k)
   -- (every point names its pair and its normal, as a compound's do: a reused `out` that held
   -- a compound's points must not keep naming that compound's members)
   for i = 1, k do

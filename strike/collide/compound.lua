@@ -175,12 +175,13 @@ local function sizes(list, n)
 end
 
 --- The contact points of a compound MTV (bodies with more than one leaf between them, and
---- an answer from solid members; see S.ite): every solid member pair that overlaps before
---- the second body moves by the MTV and touches after it gives its points (at most 2, from
---- contact.pushed: where the pair touches after the move, along the face it touches along,
---- with that face's normal and the pair's own depth along it, at most the MTV's), in leaf
---- order; each point names its members (colliderShape, collidedShape) and its normal (nx,
---- ny). Fills `out` from index 1 and returns the count (0: none).
+--- an answer from solid members; see S.ite): every solid member pair that touches once the
+--- second body has moved by the MTV, with a depth along its own normal more than SLIDE of
+--- the MTV's (outline.feature), gives its points (at most 2, from contact.pushed: where the
+--- pair touches after the move, along the face it touches along, with that face's normal
+--- and the pair's own depth along it, at most the MTV's), in leaf order; each point names
+--- its members (colliderShape, collidedShape) and its normal (nx, ny). Fills `out` from
+--- index 1 and returns the count (0: none).
 ---@param m table the MTV (x, y, nx, ny, depth)
 ---@param l1 strike.Shape[]
 ---@param n1 integer

@@ -37,14 +37,21 @@ local X, Y, R = layout.X, layout.Y, layout.R
 local VY, NX, NY = layout.VY, layout.NX, layout.NY
 local STRIDE, BASE = layout.STRIDE, layout.BASE
 
--- Write point k of `out`, reusing its table (a second point's table is kept in
--- out._spare while the manifold has one point, so that #out is always the count).
+-- Write point k of `out`, reusing its table: the tables of points past a list's count wait
+-- in the list out._spares (strike/init.lua moves them there), so that #out is always the
+-- count and nothing is allocated once a list has held as many points.
 local function setPoint(out, k, x, y, depth, id)
-  local p = out[k] or (k == 2 and out._spare)
+  local p = out[k]
   if not p then
-    p = { x = 0, y = 0, depth = 0, id = 0, nx = 0, ny = 0, colliderShape = false, collidedShape = false }
+    local spares = out._spares
+    local n = spares and #spares or 0
+    if n > 0 then
+      p, spares[n] = spares[n], nil
+    else
+      p = { x = 0, y = 0, depth = 0, id = 0, nx = 0, ny = 0, colliderShape = false, collidedShape = false }
+    end
+    out[k] = p
   end
-  out[k] = p
   p.x, p.y, p.depth, p.id = x, y, depth, id
 end
 
