@@ -162,7 +162,7 @@ end
 --- the shapes as they are when S.ite is called: when either shape has moved since the MTV
 --- was computed, the pair is tested again (nil when it no longer collides; the MTV itself
 --- is left as it is). With `out`, its tables are reused and nothing is allocated once it
---- has held two points.
+--- has held as many points.
 ---@param mtv strike.MTV
 ---@param out table|nil
 ---@return table|nil contacts

@@ -308,9 +308,9 @@ end
 --- both shapes where they are after the move, and the points within `tol` of the reference
 --- surface are kept (a circle or a point gives its one point); every point lies midway
 --- between the two surfaces after the move (on both, to round-off) and has the pair's depth.
---- Ids as the header says, those of a single pair in the same place: clipped points' from
---- the faces, a circle over face i 2 * i, over vertex v of a shape 2 * v + 1, two circles 0,
---- two rounded corners side 2's.
+--- Ids as the header says, those a single pair gets from the same features: clipped points'
+--- from the faces, a circle over face i 2 * i, over vertex v of a shape 2 * v + 1, two
+--- circles 0, two rounded corners side 2's.
 ---@param A strike.Shape
 ---@param B strike.Shape
 ---@param tx number

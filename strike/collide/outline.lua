@@ -534,8 +534,8 @@ function outline.feature(a, b, tx, ty, ux, uy, tol, minDepth)
   end
   if best > 0 and esrc[best] < 0 then -- (b's face: a's beside it, when one to round-off)
     local nx, ny = enx[best], eny[best]
-    for q = best - 1, best + 1, 2 do
-      if q < f then q = last elseif q > last then q = f end
+    for side = best - 1, best + 1, 2 do
+      local q = side < f and last or side > last and f or side -- (the edges wrap)
       if esrc[q] > 0 and enx[q] * nx + eny[q] * ny >= 1 - PARALLEL then
         local off = enx[q] * tx + eny[q] * ty - ed[q] - r
         if off <= tol and off >= -tol then
