@@ -206,7 +206,7 @@ function S.ite(mtv, out)
   out = out or {}
   local k = ops.contact(a, b, m.nx, m.ny, m.depth, m.edgeIndex, out)
   if k == 0 then return nil end
-  trim(out, k)
+  if out[k + 1] ~= nil then trim(out, k) end
   -- (every point names its pair and its normal, as a compound's do: a reused `out` that held
   -- a compound's points must not keep naming that compound's members)
   for i = 1, k do
