@@ -39,6 +39,11 @@ describe('allocation', function()
     local floor, box, ball = H.Rectangle(0, 5, 100, 10), H.Rectangle(0, -4.5, 4, 10, 0.1), H.Circle(3, -4, 5)
     local m1, m2, contacts = S.AT(floor, box), S.AT(floor, ball), {}
     nothingPerCall(kbPer(function() S.ite(m1, contacts) S.ite(m2, contacts) end, 10000), 'S.ite')
+    -- compound MTVs: a box out of an L's inner corner (4 points), a ball between two boxes
+    local L = T.Collider(H.Rectangle(50, 10, 100, 20), H.Rectangle(10, 50, 20, 100))
+    local m3 = S.triking(L, H.Rectangle(22, 22, 10, 10))
+    local m4 = S.triking(T.Collider(H.Rectangle(5, 5, 10, 10), H.Rectangle(23, 5, 10, 10)), H.Circle(14, 3, 5))
+    nothingPerCall(kbPer(function() S.ite(m3, contacts) S.ite(m4, contacts) end, 10000), 'S.ite, compound')
   end)
 
   it('transforms, bounds and elems allocate nothing', function()

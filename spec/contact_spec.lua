@@ -79,9 +79,11 @@ describe('S.ite', function()
   end)
 
   it('works on S.triking results from compound colliders', function()
+    -- (several members: the points are where the two touch once the box has moved by the
+    -- MTV, on the floor's top face y = 0, not midway as for two shapes)
     local ground = S.trikers.Collider(H.Rectangle(0, 5, 100, 10), H.Circle(200, 0, 5))
     local m = S.triking(ground, S.trikers.Rectangle(0, -4.5, 4, 10))
-    same(pointsOf(S.ite(m)), { { -2, 0.25, 0.5 }, { 2, 0.25, 0.5 } })
+    same(pointsOf(S.ite(m)), { { -2, 0, 0.5 }, { 2, 0, 0.5 } })
   end)
 
   it('keeps feature ids while the same features touch, and changes them when they change', function()
@@ -109,6 +111,46 @@ describe('S.ite', function()
     assert.equals(p1, out[1])
     S.ite(S.AT(floor(), H.Rectangle(0, -4.5, 4, 10)), out)
     assert.equals(p2, out[2])
+  end)
+
+  it('keeps #out equal to the count after a compound\'s 4 points, and reuses their tables', function()
+    local out = {}
+    local L = S.trikers.Collider(H.Rectangle(50, 10, 100, 20), H.Rectangle(10, 50, 20, 100))
+    local box = H.Rectangle(22, 22, 10, 10)
+    S.ite(S.triking(L, box), out)
+    assert.equals(4, #out)
+    local tables = {}
+    for i = 1, 4 do tables[out[i]] = true end
+    local function reused(c)
+      for i = 1, c.count do assert(tables[c[i]], 'a new point table') end
+    end
+    local two = S.ite(S.AT(floor(), H.Rectangle(0, -4.5, 4, 10)), out)
+    assert.same({ 2, 2 }, { two.count, #two })
+    reused(two)
+    local one = S.ite(S.AT(floor(), H.Circle(3, -4, 5)), out)
+    assert.same({ 1, 1 }, { one.count, #one })
+    reused(one)
+    local four = S.ite(S.triking(L, box), out)
+    assert.same({ 4, 4 }, { four.count, #four })
+    reused(four)
+  end)
+
+  it('gives every point its normal: between two shapes the MTV\'s, also in an out table a compound filled', function()
+    local out = {}
+    -- a compound's points first: the box [17, 27]^2 in the corner of an L, normals (0, 1), (1, 0)
+    local L = S.trikers.Collider(H.Rectangle(50, 10, 100, 20), H.Rectangle(10, 50, 20, 100))
+    local c = S.ite(S.triking(L, H.Rectangle(22, 22, 10, 10)), out)
+    assert.equals(4, c.count)
+    -- then a circle against a box's corner region: the normal along the centre line (3, 4) / 5
+    c = S.ite(S.AT(H.Rectangle(0, 0, 10), H.Circle(5 + 2.4, 5 + 3.2, 5)), out)
+    assert.equals(1, c.count)
+    near(c.nx, 0.6, 1e-12)
+    near(c.ny, 0.8, 1e-12)
+    assert.equals(c.nx, c[1].nx)
+    assert.equals(c.ny, c[1].ny)
+    -- and two points on a floor, each with the floor's normal (0, -1)
+    c = S.ite(S.AT(floor(), H.Rectangle(0, -4.5, 4, 10)), out)
+    for i = 1, 2 do assert.same({ 0, -1 }, { c[i].nx, c[i].ny }) end
   end)
 
   it('rejects what is not an MTV from S.AT or S.triking', function()

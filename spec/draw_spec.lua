@@ -112,6 +112,19 @@ describe('drawing', function()
     S.howContacts(nil)
   end)
 
+  it('S.howContacts draws each point of a compound MTV along its own normal', function()
+    -- the box [17, 27]^2 pushed (3, 3) out of the inner corner of an L of two bars: the points
+    -- (20, 20) and (30, 20) with the normal (0, 1), (20, 20) and (20, 30) with (1, 0)
+    local L = T.Collider(H.Rectangle(50, 10, 100, 20), H.Rectangle(10, 50, 20, 100))
+    S.howContacts(S.ite(S.triking(L, H.Rectangle(22, 22, 10, 10))), 10)
+    local lines = {}
+    for _, c in ipairs(calls) do
+      if c[1] == 'line' then lines[#lines + 1] = ('%g %g %g %g'):format(c[2], c[3], c[4], c[5]) end
+    end
+    table.sort(lines)
+    assert.same({ '20 20 20 30', '20 20 30 20', '20 30 30 30', '30 20 30 30' }, lines)
+  end)
+
   it('rejects bad arguments at the caller line', function()
     raisesAt(function() H.Circle(0, 0, 1):draw('dots') end, "strike:draw: mode must be 'line' or 'fill', got string")
     raisesAt(function() S.howMTV(42) end, 'strike.howMTV: argument 1 must be an MTV, got 42')

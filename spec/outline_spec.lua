@@ -21,9 +21,11 @@ describe('the outline rule', function()
     local c = S.ite(m)
     assert.equals(4, c.count)
     nearList({ c.nx, c.ny }, { 0, -1 })
-    local want = { { 32, 5, tiles[1] }, { 12, 5, tiles[1] }, { 52, 5, tiles[2] }, { 32, 5, tiles[2] } }
+    -- where each tile and the box touch once the box has moved up by 10: the tiles' top face
+    -- y = 0, from x = 12 to 32 on the first, 32 to 52 on the second; normal up, depth 10
+    local want = { { 32, 0, tiles[1] }, { 12, 0, tiles[1] }, { 52, 0, tiles[2] }, { 32, 0, tiles[2] } }
     for i, w in ipairs(want) do
-      nearList({ c[i].x, c[i].y, c[i].depth }, { w[1], w[2], 10 })
+      nearList({ c[i].x, c[i].y, c[i].depth, c[i].nx, c[i].ny }, { w[1], w[2], 10, 0, -1 })
       assert.equals(w[3], c[i].colliderShape)
       assert.equals(box, c[i].collidedShape)
     end
@@ -38,16 +40,16 @@ describe('the outline rule', function()
     assert.is_nil(S.ite(m))
   end)
 
-  it('S.ite on a compound MTV against a circle: one point, midway along the push', function()
+  it('S.ite on a compound MTV against a circle: one point, where the circle touches after the push', function()
     -- the circle (10, 10) r 3 in the L's corner leaves by 13 through x = 0 or y = 0 (a tie):
-    -- its surface is 3 behind its centre along the push, the outline 13 further; the point
-    -- lies midway, 3 - 13 / 2 = -3.5 along the push from the centre, 13 deep
+    -- moved by the push, its centre is 13 further along it and touches the outline 3 before
+    -- that centre, so the point is 10 along the push from (10, 10), on the outline, 13 deep
     local L = T.Concave(0, 0, 100, 0, 100, 20, 20, 20, 20, 100, 0, 100)
     local m = S.triking(L, H.Circle(10, 10, 3))
     near(m.depth, 13)
     local c = S.ite(m)
     assert.equals(1, c.count)
-    nearList({ c[1].x, c[1].y, c[1].depth }, { 10 + 3.5 * m.nx, 10 + 3.5 * m.ny, 13 })
+    nearList({ c[1].x, c[1].y, c[1].depth, c[1].nx, c[1].ny }, { 10 + 10 * m.nx, 10 + 10 * m.ny, 13, m.nx, m.ny })
   end)
 
   it('a point inside a Concave outline leaves through the outline, never onto a seam', function()

@@ -138,9 +138,9 @@ function draw.projections(mtv)
 end
 
 local function contactMarks(g, contacts, len)
-  local nx, ny = contacts.nx, contacts.ny
   for i = 1, contacts.count do
     local p = contacts[i]
+    local nx, ny = p.nx or contacts.nx, p.ny or contacts.ny -- (a compound's points: each its pair's)
     g.circle('fill', p.x, p.y, 3)
     g.line(p.x, p.y, p.x + nx * len, p.y + ny * len)
   end

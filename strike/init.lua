@@ -100,6 +100,20 @@ local function leavesOf(body, one)
   return one, 1
 end
 
+-- Move the points of a contact list past its count k to out._spares, where the next call's
+-- points are taken from (collide/contact.lua, setPoint): #out is the count, whatever the
+-- list held before, and its tables are reused.
+local function trim(out, k)
+  local n = #out
+  if n > k then
+    local spares = out._spares or {}
+    out._spares = spares
+    for i = n, k + 1, -1 do
+      spares[#spares + 1], out[i] = out[i], nil
+    end
+  end
+end
+
 -- S.ite for bodies with several members (compound.contacts): re-tested when either of the
 -- MTV's shapes moved since.
 local function compoundContacts(mtv, a, b, c1, l1, n1, c2, l2, n2, out)
@@ -111,7 +125,7 @@ local function compoundContacts(mtv, a, b, c1, l1, n1, c2, l2, n2, out)
   if not (m.depth > 0) then return nil end -- luacheck: ignore 581 (NaN reads as no collision)
   out = out or {}
   local k = compound.contacts(m, l1, n1, l2, n2, out)
-  for i = #out, k + 1, -1 do out[i] = nil end
+  trim(out, k)
   if k == 0 then return nil end
   out.count, out.nx, out.ny = k, m.nx, m.ny
   return out
@@ -136,15 +150,19 @@ local function checkMTV(fname, mtv)
   end
 end
 
---- Contact points of a collision (see "Contacts" in the README): a list of 1 or 2 points
---- `{x =, y =, depth =, id =, colliderShape =, collidedShape =}` (the shapes whose features
---- touch) with `count` and the normal `nx, ny` (the MTV's direction),
---- or nil for a separating MTV. Each point lies midway between the two surfaces; `id`
---- names the features that touch and stays the same while they do. The points describe
+--- Contact points of a collision (see "Contacts" in the README): a list of points
+--- `{x =, y =, depth =, id =, nx =, ny =, colliderShape =, collidedShape =}` (the shapes whose
+--- features touch, and the point's unit normal from the first toward the second) with
+--- `count` and `nx, ny` (the MTV's direction), or nil for a separating MTV. Between two
+--- shapes: 1 or 2 points, midway between the two surfaces, with the MTV's normal. Between
+--- bodies with several members: every member pair that touches once the second body has
+--- moved by the MTV gives up to 2 points where it touches then (on both surfaces), with its
+--- own face normal and depth along it. `id` names the features that touch and stays the
+--- same while they do. The points describe
 --- the shapes as they are when S.ite is called: when either shape has moved since the MTV
 --- was computed, the pair is tested again (nil when it no longer collides; the MTV itself
 --- is left as it is). With `out`, its tables are reused and nothing is allocated once it
---- has held two points.
+--- has held as many points.
 ---@param mtv strike.MTV
 ---@param out table|nil
 ---@return table|nil contacts
@@ -188,12 +206,12 @@ function S.ite(mtv, out)
   out = out or {}
   local k = ops.contact(a, b, m.nx, m.ny, m.depth, m.edgeIndex, out)
   if k == 0 then return nil end
-  if k == 1 and out[2] then out._spare, out[2] = out[2], nil end
-  -- (every point names its pair, as a compound's do: a reused `out` that held a compound's
-  -- points must not keep naming that compound's members)
+  if out[k + 1] ~= nil then trim(out, k) end
+  -- (every point names its pair and its normal, as a compound's do: a reused `out` that held
+  -- a compound's points must not keep naming that compound's members)
   for i = 1, k do
     local p = out[i]
-    p.colliderShape, p.collidedShape = a, b
+    p.colliderShape, p.collidedShape, p.nx, p.ny = a, b, m.nx, m.ny
   end
   out.count, out.nx, out.ny = k, m.nx, m.ny
   return out

@@ -257,7 +257,8 @@ function Model:contacts(contacts, len)
   for i = 1, contacts.count do
     local p = contacts[i]
     disc(self, p.x, p.y, 3.5)
-    segment(self, p.x, p.y, p.x + contacts.nx * len, p.y + contacts.ny * len, 1)
+    local nx, ny = p.nx or contacts.nx, p.ny or contacts.ny -- (a compound's points: each its pair's)
+    segment(self, p.x, p.y, p.x + nx * len, p.y + ny * len, 1)
   end
 end
 

@@ -20,7 +20,9 @@ local dispatch = require(ROOT .. '.collide.dispatch')
 local pair, collideOf = dispatch.pair, dispatch.collide
 local args = require(ROOT .. '.collide.args')
 local outline = require(ROOT .. '.collide.outline')
-local resolve, touches = outline.resolve, outline.touches
+local resolve, feature = outline.resolve, outline.feature
+local contact = require(ROOT .. '.collide.contact')
+local pushed = contact.pushed
 local abs = math.abs
 
 local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
@@ -156,8 +158,9 @@ function compound.collide(body1, body2, out)
   return stamp(out, r1, r2)
 end
 
--- Scratch: one pair's contact points.
-local pairOut = {}
+-- A member pair whose depth along its own normal is at most this fraction of the push's
+-- length only slid along the push: touching, not colliding, and no contact.
+local SLIDE = 1e-9
 
 -- The sum over the leaves (refreshed here) of their extent and distance from the origin:
 -- the size of round-off in the contacts' tests.
@@ -172,12 +175,14 @@ local function sizes(list, n)
 end
 
 --- The contact points of a compound MTV (bodies with more than one leaf between them, and
---- an answer from solid members; see S.ite): every solid member pair that touches once
---- the second body has moved by the MTV gives its points (at most 2, from the pair's
---- contact kernel with the MTV's normal and the pair's own overlap along it), in leaf
---- order; each point names its members (colliderShape, collidedShape). Fills `out` from
+--- an answer from solid members; see S.ite): every solid member pair that touches once the
+--- second body has moved by the MTV, with a depth along its own normal more than SLIDE of
+--- the MTV's (outline.feature), gives its points (at most 2, from contact.pushed: where the
+--- pair touches after the move, along the face it touches along, with that face's normal
+--- and the pair's own depth along it, at most the MTV's), in leaf order; each point names
+--- its members (colliderShape, collidedShape) and its normal (nx, ny). Fills `out` from
 --- index 1 and returns the count (0: none).
----@param m table the MTV (x, y, nx, ny)
+---@param m table the MTV (x, y, nx, ny, depth)
 ---@param l1 strike.Shape[]
 ---@param n1 integer
 ---@param l2 strike.Shape[]
@@ -185,8 +190,12 @@ end
 ---@param out table
 ---@return integer count
 function compound.contacts(m, l1, n1, l2, n2, out)
-  local tx, ty, nx, ny = m.x, m.y, m.nx, m.ny
+  local tx, ty, ux, uy, len = m.x, m.y, m.nx, m.ny, m.depth
   local scale = (abs(tx) + abs(ty) + sizes(l1, n1) + sizes(l2, n2)) / (n1 + n2)
+  local tol = 1e3 * outline.TOL * scale -- (the push was computed with round-off of its own)
+  -- (a pair the push slides along has a depth of 0 but for round-off, of the push's size; the
+  -- touching tolerance, of the scene's, can be larger than a small push)
+  local minDepth = SLIDE * len
   local count = 0
   for i = 1, n1 do
     local a = l1[i]
@@ -194,19 +203,15 @@ function compound.contacts(m, l1, n1, l2, n2, out)
       for j = 1, n2 do
         local b = l2[j]
         if solid(b) then
-          local touching, depth = touches(a, b, tx, ty, nx, ny, scale)
-          if touching and depth > 0 then
-            local k = pair[a.kind][b.kind].contact(a, b, nx, ny, depth, 0, pairOut)
-            for q = 1, k do
-              local p, src = out[count + 1], pairOut[q]
-              if not p then
-                p = { x = 0, y = 0, depth = 0, id = 0, colliderShape = false, collidedShape = false }
-              end
-              p.x, p.y, p.depth, p.id = src.x, src.y, src.depth, src.id
-              p.colliderShape, p.collidedShape = a, b
-              count = count + 1
-              out[count] = p
+          local nx, ny, depth, face, ia, ib = feature(a, b, tx, ty, ux, uy, tol, minDepth)
+          if nx then
+            if depth > len then depth = len end -- (n . t, |n| = 1 to round-off)
+            local k = pushed(a, b, tx, ty, nx, ny, depth, face, ia, ib, tol, out, count)
+            for q = count + 1, count + k do
+              local p = out[q]
+              p.nx, p.ny, p.colliderShape, p.collidedShape = nx, ny, a, b
             end
+            count = count + k
           end
         end
       end

@@ -16,8 +16,11 @@
 --- toward B and `edge` the MTV's edgeIndex for (A, B).
 ---
 --- Every point lies midway between the two surfaces: half its depth in front of the
---- incident feature, half behind the reference one. Its id names the features that made
---- it, so it stays the same while the same features touch:
+--- incident feature, half behind the reference one. (A compound MTV's points, from
+--- contact.pushed, are where each member pair touches once the second body has moved by the
+--- MTV: the same clipping, with each pair's own face, on the shapes as they are after that
+--- move; midway between surfaces that then touch is on both.) Its id names the features
+--- that made it, so it stays the same while the same features touch:
 ---   id = ((side * 65536 + referenceFace) * 65536 + incidentFace) * 4 + corner
 --- side 0 when the reference face is the first shape's, 1 when the second's; corner 0 or 1
 --- for an incident vertex kept as it is, 2 or 3 for a point cut by the reference face's
@@ -34,12 +37,21 @@ local X, Y, R = layout.X, layout.Y, layout.R
 local VY, NX, NY = layout.VY, layout.NX, layout.NY
 local STRIDE, BASE = layout.STRIDE, layout.BASE
 
--- Write point k of `out`, reusing its table (a second point's table is kept in
--- out._spare while the manifold has one point, so that #out is always the count).
+-- Write point k of `out`, reusing its table: the tables of points past a list's count wait
+-- in the list out._spares (strike/init.lua moves them there), so that #out is always the
+-- count and nothing is allocated once a list has held as many points.
 local function setPoint(out, k, x, y, depth, id)
-  local p = out[k] or (k == 2 and out._spare)
-  if not p then p = { x = 0, y = 0, depth = 0, id = 0 } end
-  out[k] = p
+  local p = out[k]
+  if not p then
+    local spares = out._spares
+    local n = spares and #spares or 0
+    if n > 0 then
+      p, spares[n] = spares[n], nil
+    else
+      p = { x = 0, y = 0, depth = 0, id = 0, nx = 0, ny = 0, colliderShape = false, collidedShape = false }
+    end
+    out[k] = p
+  end
   p.x, p.y, p.depth, p.id = x, y, depth, id
 end
 
@@ -68,28 +80,38 @@ local function clip(ax, ay, bx, by, ca, cb, da, db, tag)
   return ax, ay, bx, by, ca, cb
 end
 
--- Clip and keep, with Ref the reference polygon (face r) and I the incident one (face f).
--- Returns the number of points written. `side` is 0 or 1 (see the header); `flip` turns it
--- (the pair is reported the other way round, see contact.polygons).
-local function clipFaces(out, Ref, r, I, f, side, flip)
+-- Clip and keep, with Ref the reference polygon (face r) and I the incident one (face f),
+-- writing points k0 + 1, ... of `out`. Returns the number of points written. `side` is 0 or
+-- 1 (see the header); `flip` turns it (the pair is reported the other way round, see
+-- contact.polygons). Ref is taken as moved by (rox, roy) and I by (iox, ioy) (both 0 but for
+-- a compound's contacts, contact.pushed); a point is kept when it is less than `slack` in
+-- front of the reference surface, and its depth is `depth` when given, else its own.
+local function clipFaces(out, k0, Ref, r, rox, roy, I, f, iox, ioy, side, flip, slack, depth)
   if flip then side = 1 - side end
   local rk, rl = STRIDE * r + BASE, STRIDE * (r < Ref[COUNT] and r + 1 or 1) + BASE
-  local v1x, v1y, v2x, v2y = Ref[rk], Ref[rk + VY], Ref[rl], Ref[rl + VY]
+  local v1x, v1y, v2x, v2y = Ref[rk] + rox, Ref[rk + VY] + roy, Ref[rl] + rox, Ref[rl + VY] + roy
   local nx, ny = Ref[rk + NX], Ref[rk + NY]
   local tx, ty = v2x - v1x, v2y - v1y
   local len = sqrt(tx * tx + ty * ty)
   tx, ty = tx / len, ty / len
   local ik, il = STRIDE * f + BASE, STRIDE * (f < I[COUNT] and f + 1 or 1) + BASE
-  local ax, ay, bx, by = I[ik], I[ik + VY], I[il], I[il + VY]
+  local ax, ay, bx, by = I[ik] + iox, I[ik + VY] + ioy, I[il] + iox, I[il + VY] + ioy
   local ca, cb = 0, 1 -- which corner each end is (see the header)
+  local ax0, ay0, bx0, by0 = ax, ay, bx, by
   -- side plane 1: dot(t, p - v1) >= 0
   local lo = tx * v1x + ty * v1y
   ax, ay, bx, by, ca, cb = clip(ax, ay, bx, by, ca, cb, tx * ax + ty * ay - lo, tx * bx + ty * by - lo, 2)
-  if not ax then return 0 end
-  -- side plane 2: dot(t, p - v2) <= 0
-  local hi = tx * v2x + ty * v2y
-  ax, ay, bx, by, ca, cb = clip(ax, ay, bx, by, ca, cb, hi - (tx * ax + ty * ay), hi - (tx * bx + ty * by), 3)
-  if not ax then return 0 end
+  if ax then
+    -- side plane 2: dot(t, p - v2) <= 0
+    local hi = tx * v2x + ty * v2y
+    ax, ay, bx, by, ca, cb = clip(ax, ay, bx, by, ca, cb, hi - (tx * ax + ty * ay), hi - (tx * bx + ty * by), 3)
+  end
+  if not ax then
+    if not depth then return 0 end
+    -- (a compound's pair touches, a corner at an end of the reference face, and round-off
+    -- put the whole incident face past that end: its nearer end, below, and nothing else)
+    ax, ay, bx, by, ca, cb, slack = ax0, ay0, bx0, by0, 0, 1, -huge
+  end
   -- keep what is behind the reference face (rounded shapes: their surfaces are rr in front
   -- of the reference core's face and ri in front of the incident core's, so a point is
   -- kept when its core separation s is below rr + ri, at depth rr + ri - s, midway between
@@ -98,20 +120,30 @@ local function clipFaces(out, Ref, r, I, f, side, flip)
   local reach = rr + ri
   local off = nx * v1x + ny * v1y
   local idBase = ((side * 65536 + r) * 65536 + f) * 4
-  local k = 0
+  local k = k0
   local sa = nx * ax + ny * ay - off
-  if sa < reach then
+  if sa < reach + slack then
     k = k + 1
     local h = (rr - ri - sa) / 2
-    setPoint(out, k, ax + nx * h, ay + ny * h, reach - sa, idBase + ca)
+    setPoint(out, k, ax + nx * h, ay + ny * h, depth or reach - sa, idBase + ca)
   end
   local sb = nx * bx + ny * by - off
-  if sb < reach then
+  -- (a compound's pair: not the same point twice, where a corner meets a corner)
+  local twice = depth and k > k0 and (bx - ax) * (bx - ax) + (by - ay) * (by - ay) <= slack * slack
+  if sb < reach + slack and not twice then
     k = k + 1
     local h = (rr - ri - sb) / 2
-    setPoint(out, k, bx + nx * h, by + ny * h, reach - sb, idBase + cb)
+    setPoint(out, k, bx + nx * h, by + ny * h, depth or reach - sb, idBase + cb)
   end
-  return k
+  if k == k0 and depth then
+    -- (a compound's pair touches, yet round-off left both ends in front, or cut both off:
+    -- the nearer one)
+    k = k + 1
+    if sb < sa then ax, ay, sa, ca = bx, by, sb, cb end
+    local h = (rr - ri - sa) / 2
+    setPoint(out, k, ax + nx * h, ay + ny * h, depth, idBase + ca)
+  end
+  return k - k0
 end
 
 -- The feature of polygon P nearest the point (cx, cy) as an id: 2 * face or 2 * vertex + 1.
@@ -145,19 +177,19 @@ function contact.polygons(A, B, nx, ny, depth, edge, out, flip)
   local k
   if edge > 0 then
     local k0 = STRIDE * edge + BASE
-    k = clipFaces(out, A, edge, B, (alignedFace(B, -A[k0 + NX], -A[k0 + NY])), 0, flip)
+    k = clipFaces(out, 0, A, edge, 0, 0, B, (alignedFace(B, -A[k0 + NX], -A[k0 + NY])), 0, 0, 0, flip, 0)
   elseif edge < 0 then
     local k0 = STRIDE * (-edge) + BASE
-    k = clipFaces(out, B, -edge, A, (alignedFace(A, -B[k0 + NX], -B[k0 + NY])), 1, flip)
+    k = clipFaces(out, 0, B, -edge, 0, 0, A, (alignedFace(A, -B[k0 + NX], -B[k0 + NY])), 0, 0, 1, flip, 0)
   else -- (an MTV made by hand: look the reference face up)
     local fa, alignA = alignedFace(A, nx, ny)
     local fb, alignB = alignedFace(B, -nx, -ny)
     if alignB > alignA + 1e-6 then
       local k0 = STRIDE * fb + BASE
-      k = clipFaces(out, B, fb, A, (alignedFace(A, -B[k0 + NX], -B[k0 + NY])), 1, flip)
+      k = clipFaces(out, 0, B, fb, 0, 0, A, (alignedFace(A, -B[k0 + NX], -B[k0 + NY])), 0, 0, 1, flip, 0)
     else
       local k0 = STRIDE * fa + BASE
-      k = clipFaces(out, A, fa, B, (alignedFace(B, -A[k0 + NX], -A[k0 + NY])), 0, flip)
+      k = clipFaces(out, 0, A, fa, 0, 0, B, (alignedFace(B, -A[k0 + NX], -A[k0 + NY])), 0, 0, 0, flip, 0)
     end
   end
   if k == 0 then
@@ -247,6 +279,84 @@ end
 function contact.circles(A, B, nx, ny, depth, edge, out) -- luacheck: ignore 212 (B, edge)
   local r = A[R]
   setPoint(out, 1, A[X] + nx * (r - depth / 2), A[Y] + ny * (r - depth / 2), depth, 0)
+  return 1
+end
+
+-- A shape's core as one point, when it is one (a circle's centre; a segment of length 0):
+-- its x, y; else nil.
+local function corePoint(P)
+  local n = P[COUNT]
+  if not n then return P[X], P[Y] end
+  local k, l = STRIDE + BASE, 2 * STRIDE + BASE
+  if n == 2 and P[k] == P[l] and P[k + VY] == P[l + VY] then return P[k], P[k + VY] end
+  return nil
+end
+
+-- Core vertex i of P (a circle's centre for any i).
+local function coreVertex(P, i)
+  if not P[COUNT] then return P[X], P[Y] end
+  local k = STRIDE * i + BASE
+  return P[k], P[k + VY]
+end
+
+--- The points of one member pair (A of the first body, B of the second) of a compound MTV,
+--- where the pair touches once B has moved by (tx, ty) (collide/compound.lua): written to
+--- `out` after index k0; returns how many (1 or 2). The pair's own normal (nx, ny) (from A
+--- toward B), its depth and the feature it touches along come from outline.feature:
+--- `face` > 0, face `face` of A; < 0, face -face of B; 0, core vertex ia of A against core
+--- vertex ib of B. Along a face, its incident face is clipped as in contact.polygons, with
+--- both shapes where they are after the move, and the points within `tol` of the reference
+--- surface are kept (a circle or a point gives its one point); every point lies midway
+--- between the two surfaces after the move (on both, to round-off) and has the pair's depth.
+--- Ids as the header says, those a single pair gets from the same features: clipped points'
+--- from the faces, a circle over face i 2 * i, over vertex v of a shape 2 * v + 1, two
+--- circles 0, two rounded corners side 2's.
+---@param A strike.Shape
+---@param B strike.Shape
+---@param tx number
+---@param ty number
+---@param nx number
+---@param ny number
+---@param depth number
+---@param face integer
+---@param ia integer
+---@param ib integer
+---@param tol number
+---@param out table
+---@param k0 integer
+---@return integer count
+function contact.pushed(A, B, tx, ty, nx, ny, depth, face, ia, ib, tol, out, k0)
+  if face ~= 0 then
+    local Ref, r, rox, roy, I, iox, ioy, side = A, face, 0, 0, B, tx, ty, 0
+    if face < 0 then Ref, r, rox, roy, I, iox, ioy, side = B, -face, tx, ty, A, 0, 0, 1 end
+    local px, py = corePoint(I)
+    if not px then
+      local k = STRIDE * r + BASE
+      return clipFaces(out, k0, Ref, r, rox, roy, I, (alignedFace(I, -Ref[k + NX], -Ref[k + NY])), iox, ioy, side,
+        false, tol, depth)
+    end
+    -- a circle (or a point) on the face: its centre moved to midway between the surfaces
+    local k = STRIDE * r + BASE
+    local rnx, rny = Ref[k + NX], Ref[k + NY]
+    px, py = px + iox, py + ioy
+    local sep = rnx * (px - Ref[k] - rox) + rny * (py - Ref[k + VY] - roy)
+    local h = (Ref[R] - I[R] - sep) / 2
+    setPoint(out, k0 + 1, px + rnx * h, py + rny * h, depth, 2 * r)
+    return 1
+  end
+  -- two rounded corners (or circles): midway between A's surface and B's along the normal
+  local ax, ay = coreVertex(A, ia)
+  local bx, by = coreVertex(B, ib)
+  local ra, rb = A[R], B[R]
+  local id
+  if not A[COUNT] then
+    id = B[COUNT] and 2 * ib + 1 or 0
+  elseif not B[COUNT] then
+    id = 2 * ia + 1
+  else
+    id = ((2 * 65536 + ia) * 65536 + ib) * 4
+  end
+  setPoint(out, k0 + 1, (ax + nx * ra + bx + tx - nx * rb) / 2, (ay + ny * ra + by + ty - ny * rb) / 2, depth, id)
   return 1
 end
 

@@ -54,9 +54,12 @@ outline.NUDGE = 1e-9
 
 -- The differences: difference m has core vertices first[m] .. first[m] + count[m] - 1 in
 -- vx, vy (positive winding), with the outward normal (nx, ny) and offset d of the edge from
--- each vertex to the next; radius rad[m]; the members memberA[m], memberB[m].
+-- each vertex to the next; radius rad[m]; the members memberA[m], memberB[m]. Each vertex k
+-- is the sum of vertex va[k] of a's core and the negated vertex vb[k] of b's (1 for a circle),
+-- and the edge from it is a's face esrc[k] (> 0), b's face -esrc[k] (< 0; when the two are
+-- parallel, a's), or none (0: a difference of two points).
 local first, count, rad, memberA, memberB = {}, {}, {}, {}, {}
-local vx, vy, enx, eny, ed = {}, {}, {}, {}, {}
+local vx, vy, enx, eny, ed, va, vb, esrc = {}, {}, {}, {}, {}, {}, {}, {}
 local nDiff, nVert = 0, 0
 
 -- A member's core, as the merge below reads it: its vertex count (a circle's is its centre,
@@ -120,7 +123,7 @@ local function addDifference(a, b)
     local pb = (ib + j - 1) % nb + 1
     local x, y = ax[pa] + bx[pb], ay[pa] + by[pb]
     nVert = nVert + 1
-    vx[nVert], vy[nVert] = x, y
+    vx[nVert], vy[nVert], va[nVert], vb[nVert] = x, y, pa, pb
     -- the next edge: a's edge pa, b's (turned) edge pb, or both when parallel
     local stepA, stepB = i < ea, j < eb
     if stepA and stepB then
@@ -128,16 +131,16 @@ local function addDifference(a, b)
       local c = (ax[qa] - ax[pa]) * (by[qb] - by[pb]) - (ay[qa] - ay[pa]) * (bx[qb] - bx[pb])
       if c > 0 then stepB = false elseif c < 0 then stepA = false end
     end
-    local nx, ny = 0, 0 -- (two points: no edge)
+    local nx, ny, src = 0, 0, 0 -- (two points: no edge)
     if stepA then
-      nx, ny = anx[pa], any[pa]
+      nx, ny, src = anx[pa], any[pa], pa
       i = i + 1
       if stepB then j = j + 1 end
     elseif stepB then
-      nx, ny = bnx[pb], bny[pb]
+      nx, ny, src = bnx[pb], bny[pb], -pb
       j = j + 1
     end
-    enx[nVert], eny[nVert] = nx, ny
+    enx[nVert], eny[nVert], esrc[nVert] = nx, ny, src
     ed[nVert] = nx * x + ny * y
   until i >= ea and j >= eb
   count[m] = nVert - first[m] + 1
@@ -459,33 +462,108 @@ function outline.resolve(best, l1, n1, l2, n2)
   return best
 end
 
---- Do members a and b (solid, refreshed) touch once b has moved by (tx, ty) (the boundary
---- of their difference passes through it, within the tolerance of outline.resolve for the
---- scene size `scale`)? When they do, also returns how deep they overlap along the unit
---- vector (nx, ny) before the move.
+-- Faces of a and b whose normals are this near (in cosine) are one face to round-off: the
+-- difference may hold them as two edges, or as one (exactly parallel), and which of the two
+-- the push ends on is round-off's choice. The first body's is taken, as the narrow phase
+-- keeps it (collide/sat.lua), so that a pair resting on it keeps its contact ids.
+local PARALLEL = 1e-9
+
+--- Where members a and b (solid, refreshed) touch once b has moved by (tx, ty): nothing
+--- (nil) unless they touch after the move (the difference's boundary within `tol` of t) and
+--- their depth along the normal below is more than `minDepth` (a pair the move only slid
+--- along, or brought b to from beside it, is touching, not colliding). Otherwise the pair's
+--- own unit normal (from a toward b) and the feature it touches along:
+---   face > 0: face `face` of a;  face < 0: face -face of b (its normal turned);
+---   face 0: a rounded corner or a circle: core vertex ia of a against core vertex ib of b
+---   (1 for a circle's centre), the normal along the line between them (after the move).
+--- A face is one whose segment (moved out by the radii) passes within `tol` of t; when several
+--- do (at a sharp corner of the difference: a vertex touching a vertex), the one most aligned
+--- with the push's direction (ux, uy), the first found when tied; and when it is b's and a's
+--- face beside it in the difference is parallel to it (within PARALLEL) with its line within
+--- `tol` of t, a's. The pair's depth, how far its projections on that normal overlap before
+--- the move, is normal . t (the difference's support along its own normal at t), returned
+--- third.
 ---@param a strike.Shape
 ---@param b strike.Shape
 ---@param tx number
 ---@param ty number
----@param nx number
----@param ny number
----@param scale number
----@return boolean touching
+---@param ux number
+---@param uy number
+---@param tol number
+---@param minDepth number
+---@return number|nil nx
+---@return number ny
 ---@return number depth
-function outline.touches(a, b, tx, ty, nx, ny, scale)
-  local tol = 1e3 * outline.TOL * scale -- (the push was computed with round-off of its own)
+---@return integer face
+---@return integer ia
+---@return integer ib
+function outline.feature(a, b, tx, ty, ux, uy, tol, minDepth)
   if not (a[MAXX] - b[MINX] - tx >= -tol and b[MAXX] + tx - a[MINX] >= -tol
       and a[MAXY] - b[MINY] - ty >= -tol and b[MAXY] + ty - a[MINY] >= -tol) then
-    return false, 0
+    return nil, 0, 0, 0, 0, 0
   end
   nDiff, nVert = 0, 0
   addDifference(a, b)
-  local gap = coreDistance(1, tx, ty) - rad[1]
-  memberA[1], memberB[1] = false, false
-  if gap > tol or gap < -tol then return false, 0 end
-  local _, hiA = a:project(nx, ny) -- (a rounded shape's and a circle's include their radius)
-  local loB = b:project(nx, ny)
-  return true, hiA - loB
+  memberA[1], memberB[1] = false, false -- (strike keeps no shape alive)
+  local r = rad[1]
+  local gap = coreDistance(1, tx, ty) - r
+  if not (gap <= tol and gap >= -tol) then return nil, 0, 0, 0, 0, 0 end -- (NaN: no)
+  local f, last = first[1], first[1] + count[1] - 1
+  local best, score, tol2 = 0, -huge, tol * tol
+  for k = f, last do
+    local nx, ny = enx[k], eny[k]
+    if nx ~= 0 or ny ~= 0 then
+      local l = k < last and k + 1 or f
+      local ex, ey = vx[l] - vx[k], vy[l] - vy[k]
+      local dx, dy = tx - vx[k] - nx * r, ty - vy[k] - ny * r -- (from the face's start, moved out)
+      local s = dx * ex + dy * ey
+      if s > 0 then
+        local e2 = ex * ex + ey * ey
+        if s >= e2 then
+          dx, dy = dx - ex, dy - ey
+        else
+          s = s / e2
+          dx, dy = dx - s * ex, dy - s * ey
+        end
+      end
+      if dx * dx + dy * dy <= tol2 then
+        local c = nx * ux + ny * uy
+        if c > score then best, score = k, c end
+      end
+    end
+  end
+  if best > 0 and esrc[best] < 0 then -- (b's face: a's beside it, when one to round-off)
+    local nx, ny = enx[best], eny[best]
+    for side = best - 1, best + 1, 2 do
+      local q = side < f and last or side > last and f or side -- (the edges wrap)
+      if esrc[q] > 0 and enx[q] * nx + eny[q] * ny >= 1 - PARALLEL then
+        local off = enx[q] * tx + eny[q] * ty - ed[q] - r
+        if off <= tol and off >= -tol then
+          best = q
+          break
+        end
+      end
+    end
+  end
+  if best > 0 then
+    local nx, ny = enx[best], eny[best]
+    local depth = nx * tx + ny * ty
+    if not (depth > minDepth) then return nil, 0, 0, 0, 0, 0 end -- luacheck: ignore 581 (NaN: none)
+    return nx, ny, depth, esrc[best], 0, 0
+  end
+  -- no face: t is on the arc about the nearest core vertex
+  local near2, k = huge, f
+  for q = f, last do
+    local dx, dy = tx - vx[q], ty - vy[q]
+    local d2 = dx * dx + dy * dy
+    if d2 < near2 then near2, k = d2, q end
+  end
+  local d = sqrt(near2)
+  local nx, ny = ux, uy -- (t on the vertex itself: only a radius of 0 could, and it has faces)
+  if d > 0 then nx, ny = (tx - vx[k]) / d, (ty - vy[k]) / d end
+  local depth = nx * tx + ny * ty
+  if not (depth > minDepth) then return nil, 0, 0, 0, 0, 0 end -- luacheck: ignore 581 (NaN: none)
+  return nx, ny, depth, 0, va[k], vb[k]
 end
 
 -- LuaJIT: the search runs interpreted. Its short loops with data-dependent trip counts (a
