@@ -546,8 +546,10 @@ local function forget(m, c)
     i = i + 1
     p = c[i]
   end
-  p = c._spare
-  if p then p.colliderShape, p.collidedShape = false, false end
+  local spares = c._spares -- (the points past the count: strike/init.lua, S.ite)
+  if spares then
+    for j = 1, #spares do spares[j].colliderShape, spares[j].collidedShape = false, false end
+  end
 end
 
 -- Give an ended record back to the pool, holding nothing of the game's.
