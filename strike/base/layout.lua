@@ -47,8 +47,9 @@
 ---   LG1X ... LG2Y       the same, local (unrotated)                       set at construction
 ---   LPREVX, LPREVY, LNEXTX, LNEXTY  the ghost vertices, local (0 when absent)
 ---
---- Everything else a shape keeps (its local geometry `_l`, its pose stamp `_pose`, its kind,
---- its class's own data) is in named fields; a shape's integer keys are strike's alone.
+--- Everything else a shape keeps (its local geometry `_l`, its pose stamp `_pose`, its kind
+--- `_kind`, its class's own data) is in named fields starting with `_`; a shape's integer keys
+--- are strike's alone, and every other name is the game's (strike/reserved.lua).
 ---
 --- A collider (colliders/Collider.lua) keeps its cached aggregates in its own array part
 --- too, so that moving one reads and writes a few adjacent numbers instead of a dozen

@@ -43,6 +43,7 @@ local compat = require(ROOT .. '.compat')
 local unpack, tnew = compat.unpack, compat.tableNew
 local rotate = require(ROOT .. '.vec').rotate
 local checkPose = Shape._checkPose
+local spaces, badLink = Shape._spaces, Shape._badLink
 local layout = require(ROOT .. '.base.layout')
 local RADIUS, SCALE = layout.RADIUS, layout.SCALE
 local args = require(ROOT .. '.collide.args')
@@ -59,15 +60,34 @@ local DIRTY = layout.DIRTY
 local CANGLE, CSIZE = layout.CANGLE, layout.CSIZE
 
 ---@class strike.Collider : strike.Object
----@field shapes (strike.Shape|strike.Collider)[] the direct children, in order
----@field parent strike.Collider|nil the enclosing collider, if any
 ---@field type string always 'collider'
+---@field name string the class name, as S.trikers names it
 local Collider = Object:extend()
 Collider.type = 'collider'
 Collider.name = 'Collider'
+--- The class marker strike reads (see Shape._type). A collider's own fields are `_shapes`, its
+--- children (unpack), `_parent` (getParent) and its caches below; every other name that does
+--- not start with `_` is the game's.
+Collider._type = 'collider'
 
 local function isShape(v) return type(v) == 'table' and getmetatable(v) ~= nil and Object.is(v, Shape) end
 local function isCollider(v) return type(v) == 'table' and getmetatable(v) ~= nil and Object.is(v, Collider) end
+
+-- The failure path of a collider's list of children that is not its own (`_shapes`, whose
+-- slot 0 names the collider), or of a member whose `_parent` does not hold it: a game's value
+-- in a field of strike's is an error naming the field (strike/reserved.lua).
+local function badShapes(self, fname)
+  local reserved = require(ROOT .. '.reserved')
+  reserved.check(fname, 'the ' .. (reserved.classType(self) or 'collider'), self)
+  fail(('%s: the collider\'s fields starting with _ are not as strike left them; %s'):format(fname, reserved.RULE))
+end
+
+-- The list of the children of `self` (the collider of a method that checked it), checked.
+local function childrenOf(self, fname)
+  local shapes = self._shapes
+  if type(shapes) ~= 'table' or shapes[0] ~= self then badShapes(self, fname) end
+  return shapes
+end
 
 -- The cache slots and flags, all stale (see the cache protocol above), laid out once, at
 -- construction, so that the object's fields never move.
@@ -84,7 +104,7 @@ end
 ---@param ... strike.Shape|strike.Collider
 function Collider:new(...)
   if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.Collider:new') end
-  self.shapes = {}
+  self._shapes = { [0] = self } -- (slot 0: the list's owner, see childrenOf)
   startCaches(self)
   self:add(...)
 end
@@ -101,12 +121,18 @@ end
 -- the walk reaches a root in a space, queue it there, as Shape:_touch does).
 local function invalidate(self)
   local p = self
-  while p and (p._nleaves >= 0 or p._massOK or p._clean) do
+  while p do
+    if p._clean == nil then badLink(self) end -- (a `_parent` a game set: see Shape:_touch)
+    if not (p._nleaves >= 0 or p._massOK or p._clean) then break end
     p._nleaves, p._massOK, p._clean, p._single = -1, false, false, false
-    local up = p.parent
+    local up = p._parent
     if not up then
       local space = p._space
-      if space then space:_moved(p) end
+      if space then
+        local moved = spaces[space]
+        if not moved then badLink(self) end
+        moved(space, p)
+      end
     end
     p = up
   end
@@ -116,9 +142,10 @@ end
 ---@param ... strike.Shape|strike.Collider
 ---@return self
 function Collider:add(...)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:add') end
-  local shapes = self.shapes
-  if not shapes then shapes = {}; self.shapes = shapes end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:add') end
+  local shapes = self._shapes
+  if not shapes then shapes = { [0] = self }; self._shapes = shapes end
+  if type(shapes) ~= 'table' or shapes[0] ~= self then badShapes(self, 'strike.Collider:add') end
   if self._single == nil then
     -- (a collider whose constructor adds without calling Collider.new, as the original
     -- Strike's walkthrough does: its caches start here)
@@ -136,7 +163,11 @@ function Collider:add(...)
     elseif child._single == nil then
       args.badBody('strike.Collider:add', i, child)
     end
-    if child.parent then
+    if child._parent or rawget(child, '_space') or rawget(child, '_sid') ~= nil then
+      -- (a `_parent`, `_space` or `_sid` the game set is an error naming it)
+      require(ROOT .. '.reserved').check('strike.Collider:add', 'argument ' .. i, child)
+    end
+    if child._parent then
       fail(('strike.Collider:add: argument %d already belongs to a collider; remove it first or add a copy'):format(i))
     end
     if rawget(child, '_space') then
@@ -150,12 +181,13 @@ function Collider:add(...)
     local p = self
     while p do
       if p == child then fail(('strike.Collider:add: argument %d would contain itself'):format(i)) end
-      p = p.parent
+      p = p._parent
+      if p and p._clean == nil then badShapes(self, 'strike.Collider:add') end -- (a `_parent` a game set)
     end
   end
   for i = 1, select('#', ...) do
     local child = select(i, ...)
-    child.parent = self
+    child._parent = self
     shapes[#shapes + 1] = child
   end
   invalidate(self)
@@ -168,8 +200,8 @@ end
 ---@param ... integer
 ---@return strike.Shape|strike.Collider ...
 function Collider:remove(index, ...)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:remove') end
-  local shapes = self.shapes or {}
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:remove') end
+  local shapes = childrenOf(self, 'strike.Collider:remove')
   local n = #shapes
   local idx = { index, ... }
   local count = select('#', ...) + 1
@@ -187,7 +219,7 @@ function Collider:remove(index, ...)
     local c = shapes[i]
     shapes[i] = nil
     if seen[i] then
-      c.parent = nil
+      c._parent = nil
     else
       j = j + 1
       shapes[j] = c
@@ -200,19 +232,19 @@ end
 --- The direct children (shapes and colliders), not copies.
 ---@return strike.Shape|strike.Collider ...
 function Collider:unpack()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:unpack') end
-  local shapes = self.shapes or {}
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:unpack') end
+  local shapes = childrenOf(self, 'strike.Collider:unpack')
   return unpack(shapes, 1, #shapes)
 end
 
 -- Level 1: the flat list of leaves (`_leaves`, `_leafPos`, `_nleaves`), bottom-up.
 local function refreshLeaves(self)
-  local shapes = self.shapes or {}
+  local shapes = childrenOf(self, 'strike')
   local leaves, pos = self._leaves, self._leafPos
   if pos then for k in pairs(pos) do pos[k] = nil end end -- (pos: made by elems, when first used)
   local nested = false
   for i = 1, #shapes do
-    if shapes[i].shapes then nested = true break end
+    if shapes[i]._shapes then nested = true break end
   end
   if not nested then -- (the children are the leaves: the list is `shapes` itself, no copy)
     local nl = #shapes
@@ -224,7 +256,8 @@ local function refreshLeaves(self)
   local nl = 0
   for i = 1, #shapes do
     local c = shapes[i]
-    if c.shapes then
+    if c._shapes then
+      if c._nleaves == nil then childrenOf(c, 'strike') end -- (a shape with a `_shapes`: an error)
       if c._nleaves < 0 then refreshLeaves(c) end
       local cl = c._leaves
       for k = 1, c._nleaves do
@@ -256,11 +289,11 @@ end
 -- vertices. Edges (no area) weigh by length, used when the whole tree has no area.
 local function refreshMass(self)
   if self._nleaves < 0 then refreshLeaves(self) end
-  local shapes = self.shapes or {}
+  local shapes = childrenOf(self, 'strike')
   local area, ax, ay, len, lx, ly, cnt, sx, sy = 0, 0, 0, 0, 0, 0, 0, 0, 0
   for i = 1, #shapes do
     local c = shapes[i]
-    if c.shapes then
+    if c._shapes then
       if not c._massOK then refreshMass(c) end
       area, ax, ay = area + c[CAREA], ax + c[CAX], ay + c[CAY]
       len, lx, ly = len + c[CLEN], lx + c[CLX], ly + c[CLY]
@@ -295,11 +328,11 @@ end
 -- computes one until something asks)
 local function refresh(self)
   if self._nleaves < 0 then refreshLeaves(self) end
-  local shapes = self.shapes or {}
+  local shapes = childrenOf(self, 'strike')
   local minx, miny, maxx, maxy = huge, huge, -huge, -huge
   for i = 1, #shapes do
     local c = shapes[i]
-    local nested = c.shapes
+    local nested = c._shapes
     if nested then
       if not c._clean then refresh(c) end
     elseif c[DIRTY] then
@@ -335,7 +368,7 @@ end
 --- Recompute area and centroid now (they are also kept up to date automatically).
 ---@return self
 function Collider:calcAreaCentroid()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:calcAreaCentroid') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:calcAreaCentroid') end
   self._massOK, self._clean = false, false
   refreshMass(self)
   refresh(self)
@@ -345,14 +378,14 @@ end
 --- Recompute the radius now (it is also kept up to date automatically).
 ---@return self
 function Collider:calcRadius()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:calcRadius') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:calcRadius') end
   return self:calcAreaCentroid()
 end
 
 --- Total area of the leaf shapes (overlapping members count twice; edges add nothing).
 ---@return number
 function Collider:getArea()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getArea') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:getArea') end
   if not self._massOK then refreshMass(self) end
   return self[CAREA]
 end
@@ -362,7 +395,7 @@ end
 --- when empty.
 ---@return number x, number y
 function Collider:getCentroid()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getCentroid') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:getCentroid') end
   if not self._massOK then refreshMass(self) end
   return self[X], self[Y]
 end
@@ -370,7 +403,7 @@ end
 --- Area and centroid together.
 ---@return number area, number x, number y
 function Collider:getAreaCentroid()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getAreaCentroid') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:getAreaCentroid') end
   if not self._massOK then refreshMass(self) end
   return self:getArea(), self[X], self[Y]
 end
@@ -378,7 +411,7 @@ end
 --- Radius of the smallest circle about the centroid that holds every leaf.
 ---@return number
 function Collider:getRadius()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getRadius') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:getRadius') end
   if not self._clean then refresh(self) end
   local r = self[CRADIUS]
   if r < 0 then r = radius(self) end -- (a translation keeps it: see shift)
@@ -388,7 +421,7 @@ end
 --- Bounds of all leaves as minimum x, minimum y, width, height; (0, 0, 0, 0) when empty.
 ---@return number x, number y, number w, number h
 function Collider:getBbox()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getBbox') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:getBbox') end
   if not self._clean then refresh(self) end
   return self[MINX], self[MINY], self[MAXX] - self[MINX], self[MAXY] - self[MINY]
 end
@@ -396,7 +429,7 @@ end
 --- Bounds of all leaves as minimum x, minimum y, maximum x, maximum y.
 ---@return number minx, number miny, number maxx, number maxy
 function Collider:getBounds()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getBounds') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:getBounds') end
   if not self._clean then refresh(self) end
   return self[MINX], self[MINY], self[MAXX], self[MAXY]
 end
@@ -405,14 +438,14 @@ end
 --- constructor, for single-shape colliders and Capsules).
 ---@return number
 function Collider:getAngle()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getAngle') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:getAngle') end
   return self[CANGLE] or 0
 end
 
 --- Number of leaf shapes in the whole tree.
 ---@return integer
 function Collider:getShapeCount()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getShapeCount') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:getShapeCount') end
   if self._nleaves < 0 then refreshLeaves(self) end
   return self._nleaves
 end
@@ -420,8 +453,15 @@ end
 --- The outermost collider holding this one (itself when it has no parent).
 ---@return strike.Collider
 function Collider:getRoot()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getRoot') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:getRoot') end
   return Shape._rootOf(self)
+end
+
+--- The collider holding this one directly, or nil (the original Strike's `collider.parent`).
+---@return strike.Collider|nil
+function Collider:getParent()
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:getParent') end
+  return self._parent
 end
 
 -- Stateless leaf iterator: the control variable is the previous leaf.
@@ -442,7 +482,7 @@ end
 --- table of positions it keeps). A loop that removes the leaf it is at ends there.
 ---@return function, strike.Collider, nil
 function Collider:elems()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:elems') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:elems') end
   if self._nleaves < 0 then refreshLeaves(self) end
   if not self._leafPos then -- (the leaves' positions, kept up to date by refreshLeaves from now on)
     local pos, leaves = {}, self._leaves
@@ -456,18 +496,20 @@ end
 --- `for parent, shape, index in collider:ipairs() do`. Makes one closure per call.
 ---@return function
 function Collider:ipairs()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:ipairs') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:ipairs') end
   if self._nleaves < 0 then refreshLeaves(self) end
   local leaves, i = self._leaves, 0
   return function()
     i = i + 1
     local s = leaves[i]
     if not s then return nil end
-    local p = s.parent
-    local shapes = p.shapes
+    local p = s._parent
+    local shapes = p and p._shapes
+    if not shapes or shapes[0] ~= p then badShapes(self, 'strike.Collider:ipairs') end
     for k = 1, #shapes do
       if shapes[k] == s then return p, s, k end
     end
+    badShapes(self, 'strike.Collider:ipairs')
   end
 end
 
@@ -476,7 +518,7 @@ end
 ---@param ny number
 ---@return number min, number max
 function Collider:project(nx, ny)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:project') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:project') end
   number(nx, 'strike.Collider:project', 'nx')
   number(ny, 'strike.Collider:project', 'ny')
   if self._nleaves < 0 then refreshLeaves(self) end
@@ -498,7 +540,7 @@ end
 ---@param y number|nil
 ---@return boolean
 function Collider:containsPoint(x, y)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:containsPoint') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:containsPoint') end
   x, y = Shape._point(x, y, 'strike.Collider:containsPoint')
   if self._nleaves < 0 then refreshLeaves(self) end
   local leaves, n = self._leaves, self._nleaves
@@ -551,9 +593,9 @@ end
 
 local function addAngle(self, a)
   self[CANGLE] = (self[CANGLE] or 0) + a
-  local shapes = self.shapes or {}
+  local shapes = childrenOf(self, 'strike')
   for i = 1, #shapes do
-    if shapes[i].shapes then addAngle(shapes[i], a) end
+    if shapes[i]._shapes then addAngle(shapes[i], a) end
   end
 end
 
@@ -585,11 +627,11 @@ local function shift(c, dx, dy, mass, bounds)
     c._clean = true
   end
   local single = c._single
-  if single and single.parent == c then return end -- (one leaf, a child: no collider below)
-  local shapes = c.shapes
+  if single and single._parent == c then return end -- (one leaf, a child: no collider below)
+  local shapes = childrenOf(c, 'strike')
   for i = 1, #shapes do
     local child = shapes[i]
-    if child.shapes and child._nleaves > 0 then shift(child, dx, dy, mass, bounds) end
+    if child._shapes and child._nleaves > 0 then shift(child, dx, dy, mass, bounds) end
   end
 end
 
@@ -615,7 +657,7 @@ end
 ---@param dy number
 ---@return self
 function Collider:translate(dx, dy)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:translate') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:translate') end
   if type(dx) ~= 'number' or dx - dx ~= 0 then number(dx, 'strike.Collider:translate', 'dx') end
   if type(dy) ~= 'number' or dy - dy ~= 0 then number(dy, 'strike.Collider:translate', 'dy') end
   translateBy(self, dx + 0.0, dy + 0.0, 'strike.Collider:translate')
@@ -627,7 +669,7 @@ end
 ---@param y number
 ---@return self
 function Collider:translateTo(x, y)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:translateTo') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:translateTo') end
   -- (number's checks written out, as in translate: a game calls this for every body every frame)
   if type(x) ~= 'number' or x - x ~= 0 then number(x, 'strike.Collider:translateTo', 'x') end
   if type(y) ~= 'number' or y - y ~= 0 then number(y, 'strike.Collider:translateTo', 'y') end
@@ -642,7 +684,7 @@ end
 ---@param refy number|nil
 ---@return self
 function Collider:rotate(angle, refx, refy)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:rotate') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:rotate') end
   number(angle, 'strike.Collider:rotate', 'angle')
   refx, refy = optPoint(refx, refy, 'strike.Collider:rotate')
   if not refx then refx, refy = self:getCentroid() end
@@ -657,7 +699,7 @@ end
 ---@param refy number|nil
 ---@return self
 function Collider:rotateTo(angle, refx, refy)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:rotateTo') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:rotateTo') end
   number(angle, 'strike.Collider:rotateTo', 'angle')
   refx, refy = optPoint(refx, refy, 'strike.Collider:rotateTo')
   if not refx then refx, refy = self:getCentroid() end
@@ -673,7 +715,7 @@ end
 ---@param refy number|nil
 ---@return self
 function Collider:scale(sf, refx, refy)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:scale') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:scale') end
   positive(sf, 'strike.Collider:scale', 'factor')
   refx, refy = optPoint(refx, refy, 'strike.Collider:scale')
   if not refx then refx, refy = self:getCentroid() end
@@ -690,20 +732,20 @@ end
 ---@param angle number|nil
 ---@return strike.Collider
 function Collider:copy(x, y, angle)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:copy') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:copy') end
+  local shapes = childrenOf(self, 'strike.Collider:copy')
   local c = setmetatable({}, getmetatable(self))
   for k, v in pairs(self) do
-    if k ~= 'parent' and k ~= 'shapes' and k ~= '_leaves' and k ~= '_leafPos' and k ~= '_single' and k ~= '_space'
+    if k ~= '_parent' and k ~= '_shapes' and k ~= '_leaves' and k ~= '_leafPos' and k ~= '_single' and k ~= '_space'
       and k ~= '_sid' then
       c[k] = v
     end
   end
-  c._nleaves, c._massOK, c._clean, c._single, c.shapes = -1, false, false, false, {}
-  local shapes = self.shapes or {}
+  c._nleaves, c._massOK, c._clean, c._single, c._shapes = -1, false, false, false, { [0] = c }
   for i = 1, #shapes do
     local child = shapes[i]:copy()
-    child.parent = c
-    c.shapes[i] = child
+    child._parent = c
+    c._shapes[i] = child
   end
   if x ~= nil or y ~= nil then
     number(x, 'strike.Collider:copy', 'x')
@@ -718,7 +760,7 @@ end
 --- loaded on first use; an error when LÖVE is not there).
 ---@param mode string|nil 'line' (default) or 'fill'
 function Collider:draw(mode)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:draw') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:draw') end
   require(ROOT .. '.draw').body(self, mode)
 end
 
@@ -727,10 +769,10 @@ end
 --- two in order. Circles and edges are left alone.
 ---@return self
 function Collider:consolidate()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:consolidate') end
-  local shapes = self.shapes or {}
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:consolidate') end
+  local shapes = childrenOf(self, 'strike.Collider:consolidate')
   for i = 1, #shapes do
-    if shapes[i].shapes then shapes[i]:consolidate() end
+    if shapes[i]._shapes then shapes[i]:consolidate() end
   end
   local merged = true
   while merged do
@@ -742,8 +784,8 @@ function Collider:consolidate()
           local b = shapes[j]
           local m = b.merge and a:merge(b)
           if m then
-            a.parent, b.parent = nil, nil
-            m.parent = self
+            a._parent, b._parent = nil, nil
+            m._parent = self
             shapes[i] = m
             table.remove(shapes, j)
             merged = true
@@ -775,7 +817,7 @@ local leavesIntersections, leavesIntersect, leavesRayCast, leavesSegmentCast = r
 ---@param dy number
 ---@return table<strike.Shape, number[]>|nil
 function Collider:rayIntersections(x, y, dx, dy)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:rayIntersections') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:rayIntersections') end
   checkRay('strike.Collider:rayIntersections', x, y, dx, dy)
   if self._nleaves < 0 then refreshLeaves(self) end
   return leavesIntersections(self._leaves, self._nleaves, x, y, dx, dy)
@@ -790,7 +832,7 @@ end
 ---@param dy number
 ---@return boolean
 function Collider:rayIntersects(x, y, dx, dy)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:rayIntersects') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:rayIntersects') end
   checkRay('strike.Collider:rayIntersects', x, y, dx, dy)
   if self._nleaves < 0 then refreshLeaves(self) end
   return leavesIntersect(self._leaves, self._nleaves, x, y, dx, dy)
@@ -808,7 +850,7 @@ end
 ---@param maxDistance number|nil
 ---@return number|nil distance, number x, number y, number nx, number ny, strike.Shape shape
 function Collider:rayCast(x, y, dx, dy, maxDistance)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:rayCast') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:rayCast') end
   checkRay('strike.Collider:rayCast', x, y, dx, dy)
   maxDistance = checkMax('strike.Collider:rayCast', maxDistance)
   if self._nleaves < 0 then refreshLeaves(self) end
@@ -823,7 +865,7 @@ end
 ---@param y2 number
 ---@return number|nil distance, number x, number y, number nx, number ny, strike.Shape shape
 function Collider:segmentCast(x1, y1, x2, y2)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:segmentCast') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:segmentCast') end
   checkSegment('strike.Collider:segmentCast', x1, y1, x2, y2)
   if self._nleaves < 0 then refreshLeaves(self) end
   return leavesSegmentCast(self._leaves, self._nleaves, x1, y1, x2, y2)

@@ -33,7 +33,7 @@ function Rectangle:new(x, y, dx, dy, angle, radius)
   check.positive(dy, 'strike.Rectangle', 'height')
   angle = check.optNumber(angle, 'strike.Rectangle', 'angle', 0)
   local hx, hy = dx / 2, dy / 2
-  self.dx, self.dy = dx, dy
+  self._w, self._h = dx, dy
   if radius ~= nil then
     ConvexPolygon._checkRounding('strike.Rectangle', radius)
     if not (radius < hx and radius < hy) then
@@ -62,8 +62,8 @@ function Rectangle:unpack()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:unpack') end
   local s = self[SCALE]
   local x, y = self:getCentroid()
-  if self[ROUND] > 0 then return x, y, self.dx * s, self.dy * s, self[ANGLE], self[ROUND] * s end
-  return x, y, self.dx * s, self.dy * s, self[ANGLE]
+  if self[ROUND] > 0 then return x, y, self._w * s, self._h * s, self[ANGLE], self[ROUND] * s end
+  return x, y, self._w * s, self._h * s, self[ANGLE]
 end
 
 return Rectangle

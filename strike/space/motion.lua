@@ -44,6 +44,7 @@ local private = Space._internals
 
 local enter, leave, flush, candidates = private.enter, private.leave, private.flush, private.candidates
 local allowed, isSpace, checkBody, idOf = private.allowed, private.isSpace, private.checkBody, private.idOf
+local ownId = private.ownId
 
 --- The gap a move leaves between a body and what stops it: SKIN times the body's radius,
 --- plus a rounding of its position (README, "Moving bodies").
@@ -121,7 +122,7 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
             end
             if sweep.overlap then
               local m = collide(b, other, mtv)
-              if m and m.collidedShape.kind ~= 'chain' and m.colliderShape.kind ~= 'chain' then
+              if m and m.collidedShape._kind ~= 'chain' and m.colliderShape._kind ~= 'chain' then
                 t = nil
                 if dx * m.nx + dy * m.ny > 0 then -- (only when the move goes further in)
                   overlapHit(m, hitScratch)
@@ -205,8 +206,7 @@ function Space:cast(body, dx, dy, filterArg, out)
   end
   out = out or {}
   flush(self)
-  local inside = rawget(body, '_space') == self
-  local sid = inside and body._sid
+  local sid = ownId(self, F, body) -- (false when it is not in this space)
   if sid and self._sensor[sid] then return false end
   local level = enter(self)
   level.filter, level.sid = filterArg, sid
