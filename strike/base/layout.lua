@@ -68,6 +68,8 @@
 ---                             (of the sums in 9-15, a translation keeps current only those the
 ---                             centroid comes from: Collider.lua, shift)
 ---   16      CANGLE            the angle (the sum of its rotations)
+---   17      CCOUNT            the number of leaves below it       (`_massOK` or `_clean`:
+---                                                                  both set it)
 local layout = {}
 
 --- The bounds' slots.
@@ -91,9 +93,9 @@ layout.HEADER = 23
 --- A collider's slots (see above).
 layout.CRADIUS, layout.CAREA, layout.CAX, layout.CAY = 7, 8, 9, 10
 layout.CLEN, layout.CLX, layout.CLY, layout.CSX, layout.CSY = 11, 12, 13, 14, 15
-layout.CANGLE = 16
+layout.CANGLE, layout.CCOUNT = 16, 17
 --- Number of a collider's slots.
-layout.CSIZE = 16
+layout.CSIZE = 17
 
 --- A chain segment's slots, after its two vertex records (see above).
 layout.HASPREV, layout.HASNEXT, layout.CONVEX1, layout.CONVEX2 = 34, 35, 36, 37

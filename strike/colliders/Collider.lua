@@ -16,25 +16,40 @@
 ---   `_pose` (shape)       a stamp, not a flag: a new    the same                     (read by S.ite against the
 ---                         number on every move                                       MTV's `_poseA`, `_poseB`)
 ---   `_nleaves` >= 0       the flat leaf list `_leaves`, invalidate(): add, remove,   refreshLeaves (via _leafList,
----     (collider; -1       its length `_nleaves`,        consolidate                  elems, getShapeCount, the
----     when stale)         `_leafPos` (made by the first                              transforms, rays, project,
----                         elems) and `_single` (the                                  containsPoint, refreshMass)
----                         only leaf or false;
+---     (collider; -1       its length `_nleaves`,        consolidate, on the          elems, getShapeCount, the
+---     when stale)         `_leafPos` (made by the first collider changed and every   transforms, rays, project,
+---                         elems) and `_single` (the     one holding it               containsPoint, radius), for
+---                         only leaf or false;                                        the collider asked only
 ---                         S.triking's fast path)
 ---   `_massOK`             area and centroid (slots:     invalidate(), and            refreshMass (getArea,
----     (collider)          layout.lua)                   Shape:_touch of any leaf     getCentroid, getAreaCentroid)
----                                                       below it
----   `_clean` (collider)   bounds and radius (slots)     the same as `_massOK`        refresh (getBbox, getBounds,
----                                                                                    getRadius, calcAreaCentroid)
+---     (collider)          layout.lua), and the slot     Shape:_touch of any leaf     getCentroid, getAreaCentroid)
+---                         CCOUNT, its number of leaves  below it
+---   `_clean` (collider)   bounds and radius (slots),    the same as `_massOK`        refresh (getBbox, getBounds,
+---                         and CCOUNT too                                             getRadius, calcAreaCentroid)
 ---
---- Invariant: when a collider's flag is false, so is that flag on every enclosing collider.
---- Clearing keeps it by walking up from the change to the root, and may stop at the first
---- collider whose flags are already false (everything above it is false too). Refreshing
---- keeps it by working bottom-up: a collider refreshes its stale nested colliders first,
---- and refreshing an inner collider alone leaves the outer ones stale, which is allowed.
+--- Invariant: when a collider's `_massOK` or `_clean` is false, so is that flag on every
+--- enclosing collider. Clearing keeps it by walking up from the change to the root, and a
+--- move (Shape:_touch) may stop at the first collider whose flags are already false
+--- (everything above it is false too). Refreshing keeps it by working bottom-up: a collider
+--- refreshes its stale nested colliders first, and refreshing an inner collider alone
+--- leaves the outer ones stale, which is allowed. A leaf list is made for the collider that
+--- is asked for it, from a walk over everything it holds: the lists of the colliders nested
+--- in it are left as they are (stale until they are asked), so that a chain of colliders
+--- nested n deep costs O(n), not one list per level; a change of members (invalidate)
+--- therefore clears the lists all the way up to the root.
 --- Transforms of a collider need only the leaf list, so moving a collider every frame
 --- costs one world-data refresh per leaf, at the next query. spec/cache_spec.lua checks
 --- every query on an outer collider after every change to a leaf of an inner one.
+---
+--- Depth. No walk over the tree recurses deeper than a few levels, so colliders nest to
+--- any depth on every VM (spec/nesting_spec.lua: 20,000): refreshLeaves, copy, consolidate
+--- and the diagnosis of a changed field are loops with an explicit stack; refreshMass,
+--- refresh, shift and addAngle call themselves for the first SHALLOW levels below the
+--- collider asked (the fastest way for the colliders games build, a level or two deep) and
+--- hand the rest to such a loop; invalidate, Shape:_touch and getRoot walk up in a loop. The
+--- loops share one stack, `walk`, from its slot `top` up, so that a walk that calls out (a
+--- leaf's getAreaCentroid, a shape's copy) and meets another walk stays correct. A walk
+--- allocates nothing once the stack has grown to the deepest tree walked.
 local ROOT = (...):match('^(.-)%.colliders%.[^%.]+$')
 local Object = require(ROOT .. '.class')
 local Shape = require(ROOT .. '.base.Shape')
@@ -57,7 +72,11 @@ local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAX
 local CRADIUS, CAREA, CAX, CAY = layout.CRADIUS, layout.CAREA, layout.CAX, layout.CAY
 local CLEN, CLX, CLY, CSX, CSY = layout.CLEN, layout.CLX, layout.CLY, layout.CSX, layout.CSY
 local DIRTY = layout.DIRTY
-local CANGLE, CSIZE = layout.CANGLE, layout.CSIZE
+local CANGLE, CCOUNT, CSIZE = layout.CANGLE, layout.CCOUNT, layout.CSIZE
+
+-- The walks' shared stack (see "Depth" above): a walk uses the slots above `top` and puts
+-- `top` back when it is done, clearing what it put there.
+local walk, top = {}, 0
 
 ---@class strike.Collider : strike.Object
 ---@field type string always 'collider'
@@ -114,16 +133,17 @@ end
 ---@return table
 function Collider._alloc()
   if tnew then return tnew(CSIZE, 8) end
-  return { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 }
+  return { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 }
 end
 
--- The structure changed: clear every flag here and on every enclosing collider (and, when
--- the walk reaches a root in a space, queue it there, as Shape:_touch does).
+-- The structure changed: clear every flag here and on every enclosing collider, up to the
+-- root (the leaf lists of the colliders between may be stale already: see the cache
+-- protocol), and, when the walk reaches a root in a space, queue it there, as Shape:_touch
+-- does.
 local function invalidate(self)
   local p = self
   while p do
     if p._clean == nil then badLink(self) end -- (a `_parent` a game set: see Shape:_touch)
-    if not (p._nleaves >= 0 or p._massOK or p._clean) then break end
     p._nleaves, p._massOK, p._clean, p._single = -1, false, false, false
     local up = p._parent
     if not up then
@@ -237,7 +257,10 @@ function Collider:unpack()
   return unpack(shapes, 1, #shapes)
 end
 
--- Level 1: the flat list of leaves (`_leaves`, `_leafPos`, `_nleaves`), bottom-up.
+-- Level 1: the flat list of leaves (`_leaves`, `_leafPos`, `_nleaves`, `_single`) of this
+-- collider: a walk over everything it holds, depth first in order, with a stack of the lists
+-- it is inside and the index to go on from in each. Nested colliders' own lists are left as
+-- they are (see the cache protocol).
 local function refreshLeaves(self)
   local shapes = childrenOf(self, 'strike')
   local leaves, pos = self._leaves, self._leafPos
@@ -253,25 +276,32 @@ local function refreshLeaves(self)
     return
   end
   if not leaves or leaves == shapes then leaves = {}; self._leaves = leaves end
-  local nl = 0
-  for i = 1, #shapes do
-    local c = shapes[i]
-    if c._shapes then
-      if c._nleaves == nil then childrenOf(c, 'strike') end -- (a shape with a `_shapes`: an error)
-      if c._nleaves < 0 then refreshLeaves(c) end
-      local cl = c._leaves
-      for k = 1, c._nleaves do
+  local base = top
+  local n, nl, list, i = base, 0, shapes, 1
+  while true do
+    local c = list[i]
+    if c ~= nil then
+      i = i + 1
+      if c._shapes then -- (a collider: into its list, back here after it)
+        walk[n + 1], walk[n + 2] = list, i
+        n = n + 2
+        top = n
+        list, i = childrenOf(c, 'strike'), 1
+      else
         nl = nl + 1
-        leaves[nl] = cl[k]
-        if pos then pos[cl[k]] = nl end
+        leaves[nl] = c
+        if pos then pos[c] = nl end
       end
+    elseif n > base then -- (that list is done: back to the one holding it)
+      list, i = walk[n - 1], walk[n]
+      walk[n - 1], walk[n] = nil, nil
+      n = n - 2
     else
-      nl = nl + 1
-      leaves[nl] = c
-      if pos then pos[c] = nl end
+      break
     end
   end
-  for i = #leaves, nl + 1, -1 do leaves[i] = nil end
+  top = base
+  for k = #leaves, nl + 1, -1 do leaves[k] = nil end
   self._nleaves = nl
   self._single = nl == 1 and leaves[1]
 end
@@ -285,19 +315,56 @@ function Collider:_leafList()
   return self._leaves, self._nleaves
 end
 
--- Level 2: area and centroid, bottom-up from the children's own sums. Needs no world
--- vertices. Edges (no area) weigh by length, used when the whole tree has no area.
-local function refreshMass(self)
-  if self._nleaves < 0 then refreshLeaves(self) end
-  local shapes = childrenOf(self, 'strike')
+-- The stale colliders nested in `self` (`flag`: '_massOK' or '_clean' false), each before the
+-- ones it holds: breadth first into the shared stack, from slot base + 1 (self is there
+-- first). Returns the last slot used. Their refresher then runs from the last back to the
+-- first, so that each collider is refreshed after every stale one it holds (and every fresh
+-- one holds only fresh ones: the invariant).
+local function staleBelow(self, flag, base)
+  local n = base + 1
+  walk[n] = self
+  local k = n
+  while k <= n do
+    local shapes = childrenOf(walk[k], 'strike')
+    for i = 1, #shapes do
+      local c = shapes[i]
+      if c._shapes and not c[flag] then
+        n = n + 1
+        walk[n] = c
+      end
+    end
+    k = k + 1
+    top = n
+  end
+  return n
+end
+
+-- The levels of nesting that refreshMass, refresh, shift and addAngle go down by calling
+-- themselves, the way shallow colliders are fastest; below that, a walk with the shared stack
+-- takes over (see "Depth" above), so that neither Lua's stack nor C's grows with the depth.
+local SHALLOW = 8
+
+local massWalk
+
+-- Level 2: area and centroid, and the leaf count, of a collider from its children's own
+-- sums, refreshing first the stale colliders it holds (`depth` levels down already: nil at
+-- the top). Needs no world vertices. Edges (no area) weigh by length, used when the whole
+-- tree has no area.
+local function refreshMass(self, depth)
+  local shapes = self._shapes
+  if type(shapes) ~= 'table' or shapes[0] ~= self then badShapes(self, 'strike') end
   local area, ax, ay, len, lx, ly, cnt, sx, sy = 0, 0, 0, 0, 0, 0, 0, 0, 0
   for i = 1, #shapes do
     local c = shapes[i]
     if c._shapes then
-      if not c._massOK then refreshMass(c) end
+      if not c._massOK then
+        depth = depth or 0
+        if depth >= SHALLOW then return massWalk(self) end
+        refreshMass(c, depth + 1)
+      end
       area, ax, ay = area + c[CAREA], ax + c[CAX], ay + c[CAY]
       len, lx, ly = len + c[CLEN], lx + c[CLX], ly + c[CLY]
-      cnt, sx, sy = cnt + c._nleaves, sx + c[CSX], sy + c[CSY]
+      cnt, sx, sy = cnt + c[CCOUNT], sx + c[CSX], sy + c[CSY]
     else
       local a, x, y = c:getAreaCentroid()
       if a > 0 then
@@ -310,7 +377,7 @@ local function refreshMass(self)
     end
   end
   self[CAREA], self[CAX], self[CAY], self[CLEN], self[CLX], self[CLY] = area, ax, ay, len, lx, ly
-  self[CSX], self[CSY] = sx, sy -- (the count of leaves is _nleaves)
+  self[CSX], self[CSY], self[CCOUNT] = sx, sy, cnt
   if area > 0 then
     self[X], self[Y] = ax / area, ay / area
   elseif len > 0 then
@@ -323,39 +390,72 @@ local function refreshMass(self)
   self._massOK = true
 end
 
--- Level 3: bounds and radius (these need the leaves' world vertices).
+-- refreshMass of every stale collider in `self`, deepest first, `self` last: each then holds
+-- fresh ones only (refreshMass, which came here, left `self` as it was).
+function massWalk(self)
+  local base = top
+  local n = staleBelow(self, '_massOK', base)
+  for k = n, base + 1, -1 do
+    refreshMass(walk[k])
+    walk[k] = nil
+  end
+  top = base
+end
+
+local boundsWalk
+
+-- Level 3: bounds, and the leaf count, of a collider, refreshing first the stale colliders it
+-- holds (as refreshMass). These need the leaves' world vertices.
 -- (the bounds need no centroid: a body a space adds, or a bullet that only translates, never
 -- computes one until something asks)
-local function refresh(self)
-  if self._nleaves < 0 then refreshLeaves(self) end
-  local shapes = childrenOf(self, 'strike')
+local function refresh(self, depth)
+  local shapes = self._shapes
+  if type(shapes) ~= 'table' or shapes[0] ~= self then badShapes(self, 'strike') end
   local minx, miny, maxx, maxy = huge, huge, -huge, -huge
+  local cnt = 0
   for i = 1, #shapes do
     local c = shapes[i]
-    local nested = c._shapes
-    if nested then
-      if not c._clean then refresh(c) end
+    local k = 1
+    if c._shapes then
+      if not c._clean then
+        depth = depth or 0
+        if depth >= SHALLOW then return boundsWalk(self) end
+        refresh(c, depth + 1)
+      end
+      k = c[CCOUNT] -- (an empty nested collider bounds nothing)
     elseif c[DIRTY] then
       c:_refresh()
     end
-    if not nested or c._nleaves > 0 then -- (an empty nested collider bounds nothing)
+    if k > 0 then
       local x0, y0, x1, y1 = c[MINX], c[MINY], c[MAXX], c[MAXY]
       if x0 < minx then minx = x0 end
       if y0 < miny then miny = y0 end
       if x1 > maxx then maxx = x1 end
       if y1 > maxy then maxy = y1 end
+      cnt = cnt + k
     end
   end
-  if self._nleaves == 0 then minx, miny, maxx, maxy = 0, 0, 0, 0 end
+  if cnt == 0 then minx, miny, maxx, maxy = 0, 0, 0, 0 end
   self[CRADIUS] = -1 -- (computed by the first getRadius: a space needs the bounds alone)
   self[MINX], self[MINY], self[MAXX], self[MAXY] = minx, miny, maxx, maxy
+  self[CCOUNT] = cnt
   self._clean = true
 end
-Collider._refresh = refresh
 
+-- refresh of every stale collider in `self`, deepest first, `self` last (as massWalk).
+function boundsWalk(self)
+  local base = top
+  local n = staleBelow(self, '_clean', base)
+  for k = n, base + 1, -1 do
+    refresh(walk[k])
+    walk[k] = nil
+  end
+  top = base
+end
 -- The radius about the centroid, of a clean collider (see getRadius).
 local function radius(self)
   if not self._massOK then refreshMass(self) end
+  if self._nleaves < 0 then refreshLeaves(self) end
   local cx, cy, leaves, r = self[X], self[Y], self._leaves, 0
   for i = 1, self._nleaves do
     local d = leaves[i]:_farthest(cx, cy)
@@ -591,11 +691,47 @@ local function eachLeaf(self, fname, pose, a, b, c, turn)
   end
 end
 
-local function addAngle(self, a)
+-- Call fn(c, x, y, z) on every collider held by `self` at any depth, `self` not included,
+-- in no particular order, and go below only where `into(c)` (a walk with the shared stack: see
+-- "Depth" above; fn must not change the tree).
+local function eachBelow(self, into, fn, x, y, z, w)
+  local base = top
+  local n, c = base, self
+  while true do
+    local shapes = childrenOf(c, 'strike')
+    for i = 1, #shapes do
+      local child = shapes[i]
+      if child._shapes and into(child) then
+        fn(child, x, y, z, w)
+        n = n + 1
+        walk[n] = child
+        top = n
+      end
+    end
+    if n == base then break end
+    c = walk[n]
+    walk[n] = nil
+    n = n - 1
+  end
+  top = base
+end
+
+local function always() return true end
+
+local function turn(c, a) c[CANGLE] = (c[CANGLE] or 0) + a end
+
+-- Add `a` to the angle of this collider and of every collider it holds (`depth` levels down
+-- already: nil at the top; see SHALLOW).
+local function addAngle(self, a, depth)
   self[CANGLE] = (self[CANGLE] or 0) + a
-  local shapes = childrenOf(self, 'strike')
+  if self._nleaves >= 0 and self._leaves == self._shapes then return end -- (no collider below)
+  depth = depth or 0
+  if depth >= SHALLOW then return eachBelow(self, always, turn, a) end
+  local shapes = self._shapes -- (childrenOf written out)
+  if type(shapes) ~= 'table' or shapes[0] ~= self then badShapes(self, 'strike') end
   for i = 1, #shapes do
-    if shapes[i]._shapes then addAngle(shapes[i], a) end
+    local child = shapes[i]
+    if child._shapes then addAngle(child, a, depth + 1) end
   end
 end
 
@@ -609,7 +745,7 @@ end
 -- area, else the length's when there are edges, else the leaves' centroids'. The others are
 -- read by nothing until the next refreshMass recomputes them all: an enclosing collider that
 -- holds c has area (or length) whenever c has, and uses its own first sums then too.
-local function shift(c, dx, dy, mass, bounds)
+local function shiftOne(c, dx, dy, mass, bounds)
   if mass then
     c[X], c[Y] = c[X] + dx, c[Y] + dy
     local area = c[CAREA]
@@ -618,7 +754,7 @@ local function shift(c, dx, dy, mass, bounds)
     elseif c[CLEN] > 0 then
       c[CLX], c[CLY] = c[CLX] + c[CLEN] * dx, c[CLY] + c[CLEN] * dy
     else
-      c[CSX], c[CSY] = c[CSX] + c._nleaves * dx, c[CSY] + c._nleaves * dy
+      c[CSX], c[CSY] = c[CSX] + c[CCOUNT] * dx, c[CSY] + c[CCOUNT] * dy
     end
     c._massOK = true
   end
@@ -626,12 +762,41 @@ local function shift(c, dx, dy, mass, bounds)
     c[MINX], c[MINY], c[MAXX], c[MAXY] = c[MINX] + dx, c[MINY] + dy, c[MAXX] + dx, c[MAXY] + dy
     c._clean = true
   end
-  local single = c._single
-  if single and single._parent == c then return end -- (one leaf, a child: no collider below)
-  local shapes = childrenOf(c, 'strike')
+end
+
+local function holdsLeaves(c) return c[CCOUNT] > 0 end
+
+-- shiftOne on c (written out: every translation of a body comes here) and on every collider
+-- it holds that holds a leaf (`depth` levels down already: nil at the top; see SHALLOW).
+local function shift(c, dx, dy, mass, bounds, depth)
+  if mass then
+    c[X], c[Y] = c[X] + dx, c[Y] + dy
+    local area = c[CAREA]
+    if area > 0 then
+      c[CAX], c[CAY] = c[CAX] + area * dx, c[CAY] + area * dy
+    elseif c[CLEN] > 0 then
+      c[CLX], c[CLY] = c[CLX] + c[CLEN] * dx, c[CLY] + c[CLEN] * dy
+    else
+      c[CSX], c[CSY] = c[CSX] + c[CCOUNT] * dx, c[CSY] + c[CCOUNT] * dy
+    end
+    c._massOK = true
+  end
+  if bounds then
+    c[MINX], c[MINY], c[MAXX], c[MAXY] = c[MINX] + dx, c[MINY] + dy, c[MAXX] + dx, c[MAXY] + dy
+    c._clean = true
+  end
+  if c._nleaves >= 0 then -- (a collider's leaf list, when current, tells when none is nested)
+    if c._leaves == c._shapes then return end -- (its children are its leaves)
+    local single = c._single
+    if single and single._parent == c then return end -- (one leaf, a child)
+  end
+  depth = depth or 0
+  if depth >= SHALLOW then return eachBelow(c, holdsLeaves, shiftOne, dx, dy, mass, bounds) end
+  local shapes = c._shapes -- (childrenOf written out)
+  if type(shapes) ~= 'table' or shapes[0] ~= c then badShapes(c, 'strike') end
   for i = 1, #shapes do
     local child = shapes[i]
-    if child._shapes and child._nleaves > 0 then shift(child, dx, dy, mass, bounds) end
+    if child._shapes and child[CCOUNT] > 0 then shift(child, dx, dy, mass, bounds, depth + 1) end
   end
 end
 
@@ -723,6 +888,20 @@ function Collider:scale(sf, refx, refy)
   return self
 end
 
+-- A copy of the collider `self` alone: its fields but for its links and caches (the slots
+-- are copied, stale), and an empty list of children.
+local function copyNode(self)
+  local c = setmetatable({}, getmetatable(self))
+  for k, v in pairs(self) do
+    if k ~= '_parent' and k ~= '_shapes' and k ~= '_leaves' and k ~= '_leafPos' and k ~= '_single' and k ~= '_space'
+      and k ~= '_sid' then
+      c[k] = v
+    end
+  end
+  c._nleaves, c._massOK, c._clean, c._single, c._shapes = -1, false, false, false, { [0] = c }
+  return c
+end
+
 --- An independent deep copy of the same class (children copied, parent links rebuilt);
 --- then, if given, moved so its centroid is at (x, y) and rotated to `angle`. strike's own
 --- data is duplicated; the values of your own fields (an `entity`, say) are shared by
@@ -733,20 +912,34 @@ end
 ---@return strike.Collider
 function Collider:copy(x, y, angle)
   if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:copy') end
-  local shapes = childrenOf(self, 'strike.Collider:copy')
-  local c = setmetatable({}, getmetatable(self))
-  for k, v in pairs(self) do
-    if k ~= '_parent' and k ~= '_shapes' and k ~= '_leaves' and k ~= '_leafPos' and k ~= '_single' and k ~= '_space'
-      and k ~= '_sid' then
-      c[k] = v
+  childrenOf(self, 'strike.Collider:copy')
+  local c = copyNode(self)
+  -- the tree below, a level at a time: a stack of (original, copy) pairs whose children are
+  -- still to copy (a nested collider of a class with a copy of its own is copied by it)
+  local base = top
+  local n, src, dst = base, self, c
+  while true do
+    local shapes, list = childrenOf(src, 'strike.Collider:copy'), dst._shapes
+    for i = 1, #shapes do
+      local child = shapes[i]
+      local copy
+      if child._shapes and child.copy == Collider.copy then
+        copy = copyNode(child)
+        walk[n + 1], walk[n + 2] = child, copy
+        n = n + 2
+        top = n
+      else
+        copy = child:copy()
+      end
+      copy._parent = dst
+      list[i] = copy
     end
+    if n == base then break end
+    src, dst = walk[n - 1], walk[n]
+    walk[n - 1], walk[n] = nil, nil
+    n = n - 2
   end
-  c._nleaves, c._massOK, c._clean, c._single, c._shapes = -1, false, false, false, { [0] = c }
-  for i = 1, #shapes do
-    local child = shapes[i]:copy()
-    child._parent = c
-    c._shapes[i] = child
-  end
+  top = base
   if x ~= nil or y ~= nil then
     number(x, 'strike.Collider:copy', 'x')
     number(y, 'strike.Collider:copy', 'y')
@@ -764,16 +957,10 @@ function Collider:draw(mode)
   require(ROOT .. '.draw').body(self, mode)
 end
 
---- Merge adjacent convex polygons among the direct children wherever their union is
---- convex (recursing into nested colliders); the merged piece replaces the first of the
---- two in order. Circles and edges are left alone.
----@return self
-function Collider:consolidate()
-  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:consolidate') end
-  local shapes = childrenOf(self, 'strike.Collider:consolidate')
-  for i = 1, #shapes do
-    if shapes[i]._shapes then shapes[i]:consolidate() end
-  end
+-- Merge adjacent convex polygons among the direct children of c wherever their union is
+-- convex (see consolidate), and mark its caches stale.
+local function mergeChildren(c)
+  local shapes = c._shapes
   local merged = true
   while merged do
     merged = false
@@ -785,7 +972,7 @@ function Collider:consolidate()
           local m = b.merge and a:merge(b)
           if m then
             a._parent, b._parent = nil, nil
-            m._parent = self
+            m._parent = c
             shapes[i] = m
             table.remove(shapes, j)
             merged = true
@@ -796,6 +983,38 @@ function Collider:consolidate()
       if merged then break end
     end
   end
+  c._nleaves, c._massOK, c._clean, c._single = -1, false, false, false
+end
+
+--- Merge adjacent convex polygons among the direct children wherever their union is
+--- convex, in this collider and in every collider nested in it; the merged piece replaces
+--- the first of the two in order. Circles and edges are left alone.
+---@return self
+function Collider:consolidate()
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:consolidate') end
+  childrenOf(self, 'strike.Collider:consolidate')
+  -- every collider of the tree, breadth first into the shared stack (a merge changes only
+  -- its own collider's children: the order does not matter)
+  local base = top
+  local n = base + 1
+  walk[n] = self
+  local k = n
+  while k <= n do
+    local shapes = childrenOf(walk[k], 'strike.Collider:consolidate')
+    for i = 1, #shapes do
+      if shapes[i]._shapes then
+        n = n + 1
+        walk[n] = shapes[i]
+      end
+    end
+    k = k + 1
+  end
+  top = n
+  for j = n, base + 1, -1 do
+    mergeChildren(walk[j])
+    walk[j] = nil
+  end
+  top = base
   invalidate(self)
   return self
 end
