@@ -345,12 +345,10 @@ end
 function Space:has(body)
   if not isSpace(self) then badSelf(self, 'strike.Space:has') end
   if type(body) ~= 'table' then return false end
-  if rawget(body, '_space') == self then
-    if self._body[body._sid] ~= body then notHere(self, 'strike.Space:has', body, 'argument 1') end
-    return true
-  end
-  if reserved.classType(body) then ownId(self, 'strike.Space:has', body) end -- (raises for a field changed)
-  return false
+  local here = rawget(body, '_space') == self and self._body[body._sid] == body
+  -- (a body whose `_space` or `_sid` the game changed: an error naming it)
+  if not here and reserved.classType(body) then ownId(self, 'strike.Space:has', body) end
+  return here
 end
 
 --- The number of bodies.
