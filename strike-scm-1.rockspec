@@ -71,6 +71,7 @@ build = {
       ["strike.motion.separation"] = "strike/motion/separation.lua",
       ["strike.motion.sweep"] = "strike/motion/sweep.lua",
       ["strike.registry"] = "strike/registry.lua",
+      ["strike.reserved"] = "strike/reserved.lua",
       ["strike.shapes.Capsule"] = "strike/shapes/Capsule.lua",
       ["strike.shapes.Circle"] = "strike/shapes/Circle.lua",
       ["strike.shapes.ConvexPolygon"] = "strike/shapes/ConvexPolygon.lua",

@@ -48,7 +48,7 @@ local ARROW_SCALE = 4
 -- The SVG elements of one body.
 local function bodySVG(out, body, colour)
   for s in body:elems() do
-    if s.kind == 'circle' then
+    if s:getKind() == 'circle' then
       local x, y = s:getCentroid()
       out[#out + 1] = ('<circle class="shape" cx="%s" cy="%s" r="%s" fill="%s" fill-opacity="0.35" stroke="%s"/>')
         :format(fmt(x), fmt(y), fmt(s:getRadius()), colour, colour)

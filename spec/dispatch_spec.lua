@@ -95,7 +95,7 @@ describe('contact ids of a pair registered the other way round', function()
 
   it('name the side as the MTV orders the shapes, for (polygon, chain) as for (chain, polygon)', function()
     local floor = S.trikers.Chain(0, 0, 100, 0) -- free side above on a LÖVE screen (y down)
-    local seg = floor.shapes[1]
+    local seg = (floor:unpack())
     local box = S.hapes.Rectangle(50, -5, 10, 10, 0.3) -- a corner about 1.25 px into the floor
     local m1 = S.AT(box, seg)
     local m2 = S.AT(seg, box)

@@ -18,14 +18,14 @@ local function minX(b) return (b:getBounds()) end
 local function maxX(b) local _, _, x = b:getBounds() return x end
 -- The centre of a single-shape collider: its shape's pose, which translateTo sets exactly
 -- (the collider's own centroid is area-weighted, a * x / a, and may round).
-local function midX(b) return (b.shapes[1]:getCentroid()) end
+local function midX(b) return ((b:unpack()):getCentroid()) end
 
 -- Move `body` horizontally so that `getX(body)` is exactly `x` when some double allows it
 -- (a few translations absorb the rounding of centroid-relative vertices). Returns true
 -- when it is exact.
 local function placeX(body, x, getX)
   if getX == midX then
-    local leaf = body.shapes[1]
+    local leaf = (body:unpack())
     leaf:translateTo(x, select(2, leaf:getCentroid()))
     return midX(body) == x
   end
@@ -156,7 +156,7 @@ describe('S.trikers.Chain', function()
     assert.equals(3, #seg)
     local pts = { 0, 0, 10, 0, 20, 5, 30, 5 }
     for i, s in ipairs(seg) do
-      assert.equals('chain', s.kind)
+      assert.equals('chain', s:getKind())
       assert.equals(2, s:getVertexCount())
       local x1, y1, x2, y2 = s:getEdge(1)
       assert.same({ pts[2 * i - 1], pts[2 * i], pts[2 * i + 1], pts[2 * i + 2] }, { x1, y1, x2, y2 })
@@ -176,7 +176,7 @@ describe('S.trikers.Chain', function()
     assert.same({ seg[2]:unpack() }, { ChainSegment(seg[2]:unpack()):unpack() })
     assert.same({ seg[1]:unpack() }, { ChainSegment(seg[1]:unpack()):unpack() })
     assert.same({ seg[3]:unpack() }, { seg[3]:copy():unpack() })
-    assert.equals('chain', seg[3]:copy().kind)
+    assert.equals('chain', seg[3]:copy():getKind())
   end)
 
   it('closes a loop, from arguments or from one table, and drops duplicate points', function()
@@ -353,8 +353,8 @@ describe('S.trikers.Chain', function()
     local nx, ny = seg[2]:getNormal(1)
     local px, py = 10.05, -1.99 -- on segment 2, just past the peak
     local ball = T.Circle(px + nx * 0.392, py + ny * 0.392, 0.4)
-    assert.is_true(S.AT(seg[1], ball.shapes[1]).separating)
-    assert.is_false(sat.polygonCircle(seg[1], ball.shapes[1], S.MTV()).separating) -- (an Edge would collide)
+    assert.is_true(S.AT(seg[1], (ball:unpack())).separating)
+    assert.is_false(sat.polygonCircle(seg[1], (ball:unpack()), S.MTV()).separating) -- (an Edge would collide)
     m = S.triking(hill, ball)
     near(m.nx, nx)
     near(m.ny, ny)
@@ -388,7 +388,7 @@ describe('S.trikers.Chain', function()
   it('never collides with another chain; works against edges and points', function()
     local a, b = T.Chain(0, 0, 10, 0), T.Chain(5, -1, 5, 1, 6, 1)
     assert.is_false(S.triking(a, b))
-    local m = S.AT(a.shapes[1], b.shapes[1])
+    local m = S.AT((a:unpack()), (b:unpack()))
     assert.is_true(m.separating)
     local e = S.triking(a, T.Edge(2, -1, 3, 0.5))
     assert.is_table(e)
@@ -522,8 +522,8 @@ describe('chain allocation', function()
       local kb = kbPer(function()
         S.triking(hill, body, o)
         S.triking(body, hill, o)
-        S.AT(hill.shapes[2], body.shapes[1], o)
-        S.AT(body.shapes[1], hill.shapes[4], o)
+        S.AT(select(2, hill:unpack()), (body:unpack()), o)
+        S.AT((body:unpack()), select(4, hill:unpack()), o)
       end, 2500)
       assert(kb < 4, ('%s: %.3f KB over 10,000 calls'):format(case[1], kb))
     end

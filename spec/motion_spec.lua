@@ -383,7 +383,7 @@ describe('S.weep', function()
     it('members of one collider never hit each other', function()
       -- bare, the left member by (10, 0) would meet the right one (gap 6): t = 0.6
       isHit(weep(H.Rectangle(0, 0, 4, 4), 10, 0, H.Rectangle(10, 0, 4, 4)), 0.6, 8, 0, -1, 0)
-      local m1, m2 = pair.shapes[1], pair.shapes[2]
+      local m1, m2 = (pair:unpack()), select(2, pair:unpack())
       assert.is_false(weep(m1, 10, 0, m2))
       assert.is_false(weep(m2, -10, 0, m1))
       assert.is_false(weep(pair, 10, 0, m1))
@@ -392,7 +392,7 @@ describe('S.weep', function()
       -- members of a nested collider too
       local inner = T.Collider(H.Rectangle(20, 0, 4, 4))
       local outer = T.Collider(H.Rectangle(0, 0, 4, 4), inner)
-      assert.is_false(weep(outer.shapes[1], 20, 0, inner.shapes[1]))
+      assert.is_false(weep((outer:unpack()), 20, 0, (inner:unpack())))
     end)
 
     it('an empty collider hits nothing', function()

@@ -347,7 +347,7 @@ describe('rays on colliders', function()
     t = cap:rayCast(-10, 0, 1, 0)
     near(t, 9, TOL)
     local one = T.Circle(0, 0, 1)
-    expect.nearList(one:rayIntersections(-3, 0, 1, 0)[one.shapes[1]], { 2, 4 }, TOL)
+    expect.nearList(one:rayIntersections(-3, 0, 1, 0)[(one:unpack())], { 2, 4 }, TOL)
   end)
 end)
 

@@ -9,7 +9,7 @@ local pi, sqrt = math.pi, math.sqrt
 describe('S.hapes.Capsule', function()
   it('is one rounded shape: a segment swept by a circle', function()
     local c = H.Capsule(1, 2, 10, 30) -- core (1, -8) to (1, 12), radius 5
-    assert.equals('rounded', c.kind)
+    assert.equals('rounded', c:getKind())
     assert.equals(5, c:getRounding())
     near(c:getArea(), pi * 25 + 10 * 20)
     nearList({ c:getBbox() }, { -4, -13, 10, 30 })
@@ -51,10 +51,10 @@ describe('S.hapes.Capsule', function()
 
   it('copies stay rounded (their own kind, not the class\'s)', function()
     local r = H.Rectangle(0, 0, 10, 10, 0.3, 2):copy(5, 5)
-    assert.equals('rounded', r.kind)
+    assert.equals('rounded', r:getKind())
     assert.equals(2, r:getRounding())
     local cap = T.Capsule(0, 0, 2, 10):copy(3, 3, 1)
-    assert.equals('rounded', cap.shapes[1].kind)
+    assert.equals('rounded', (cap:unpack()):getKind())
     -- (a sharp copy would collide with a circle at its box's corner)
     assert.is_false(S.triking(H.Rectangle(0, 0, 10, 10, 0, 2):copy(0, 0), T.Circle(5.5, 5.5, 1)))
   end)
@@ -62,7 +62,7 @@ describe('S.hapes.Capsule', function()
   it('S.trikers.Capsule holds one such shape', function()
     local c = T.Capsule(0, 0, 10, 30, 0.5)
     assert.equals(1, c:getShapeCount())
-    assert.equals('rounded', c.shapes[1].kind)
+    assert.equals('rounded', (c:unpack()):getKind())
     near(c:getArea(), pi * 25 + 200)
     nearList({ c:getDimensions() }, { 10, 30 })
     near(c:getAngle(), 0.5)
@@ -72,7 +72,7 @@ end)
 describe('rounded rectangles and polygons', function()
   it('a rounded Rectangle still spans w by h, with quarter discs at the corners', function()
     local r = H.Rectangle(0, 0, 10, 10, 0, 2) -- core [-3, 3]^2
-    assert.equals('rounded', r.kind)
+    assert.equals('rounded', r:getKind())
     near(r:getArea(), 100 - (4 - pi) * 4)
     nearList({ r:getBbox() }, { -5, -5, 10, 10 })
     nearList(r:getVertices(), { -3, -3, 3, -3, 3, 3, -3, 3 })
@@ -209,7 +209,7 @@ describe('rounded collisions', function()
     -- reaches past the segment's start (10, 0): the nearest points give a slanted normal,
     -- which the segment may not push along; it pushes along its own normal by how far the
     -- box reaches behind its line, radius included: 0.1.
-    local seg2 = ground.shapes[2]
+    local seg2 = select(2, ground:unpack())
     local box = H.Rectangle(9.3, -0.9, 2, 2, 0, 0.5) -- core x [8.8, 9.8], y [-1.4, -0.4]
     local m = S.AT(seg2, box)
     nearList({ m.nx, m.ny, m.depth }, { 0, -1, 0.1 }, 1e-12)

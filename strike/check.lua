@@ -4,6 +4,10 @@
 --- the check happened. Only the error path pays for the stack walk.
 local check = {}
 
+local ROOT = (...):match('^(.-)%.[^%.]+$')
+-- strike/reserved.lua, loaded by the failure paths that need it (it requires this file)
+local function reserved() return require(ROOT .. '.reserved') end
+
 local getinfo = debug and debug.getinfo
 local huge = math.huge
 
@@ -46,19 +50,18 @@ function check.describe(v)
   return t
 end
 
---- Like describe, but names strike's own objects (a class instance with a `type` field):
---- "a shape", "a collider", "an MTV".
+--- Like describe, but names strike's own objects by their class's marker `_type` (never a
+--- field of the instance, which may be a game's): "a shape", "a collider", "an MTV", "a space".
 ---@param v any
 ---@return string
 function check.what(v)
-  if type(v) == 'table' and getmetatable(v) ~= nil and type(v.type) == 'string' then
-    return v.type == 'mtv' and 'an MTV' or 'a ' .. v.type
-  end
+  local t = reserved().classType(v)
+  if t then return t == 'mtv' and 'an MTV' or 'a ' .. t end
   return check.describe(v)
 end
 
 --- Raise the error for an `out` argument that is not a table or nil, or is one of strike's
---- objects (a shape, a collider, an MTV: they have a `type` field).
+--- objects (a shape, a collider, an MTV: their classes have a `_type` field).
 ---@param fname string
 ---@param out any
 function check.badOut(fname, out)
@@ -73,7 +76,7 @@ local function describeSelf(v)
   if t == 'nil' or t == 'boolean' then return tostring(v) end
   if t ~= 'table' then return 'a ' .. t end
   if rawget(v, '__index') == v then return 'a class' end
-  local kind = v.type
+  local kind = reserved().classType(v)
   if kind == 'shape' then return 'a shape' end
   if kind == 'collider' then return 'a collider' end
   if kind == 'mtv' then return 'an MTV' end
@@ -90,18 +93,25 @@ end
 ---@param fname string
 ---@param on string|nil
 function check.badSelf(self, fname, on)
+  -- (a body whose fields the game changed: name the field, not the call)
+  local t = reserved().classType(self)
+  if t == 'shape' or t == 'collider' then reserved().check(fname, 'the ' .. t, self) end
   check.fail(("%s: called with '.' instead of ':' (self is %s); call it with ':'%s"):format(fname,
     describeSelf(self), on and (' on ' .. on) or ''))
 end
 
 --- The failure path of a collider method's inline test of its `self`, `type(self) ~= 'table'
---- or self.shapes == nil` (an own field: cheaper than the class's `type`). Returns when
+--- or self._shapes == nil` (an own field: cheaper than the class's marker). Returns when
 --- `self` is a collider after all, one whose constructor has not made its list of children
---- (Collider:add makes it); otherwise raises check.badSelf's error.
+--- yet (Collider:add makes it: a constructor may add before calling Collider.new); otherwise
+--- raises check.badSelf's error, which names a field of strike's the game changed.
 ---@param self any
 ---@param fname string
 function check.badCollider(self, fname)
-  if type(self) == 'table' and self.type == 'collider' and rawget(self, '__index') ~= self then return end
+  if reserved().classType(self) == 'collider' and rawget(self, '_single') == nil and rawget(self, '_nleaves') == nil
+    and rawget(self, '_shapes') == nil then
+    return
+  end
   check.badSelf(self, fname)
 end
 

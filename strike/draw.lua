@@ -5,6 +5,7 @@
 local ROOT = (...):match('^(.-)%.[^%.]+$')
 local check = require(ROOT .. '.check')
 local kinds = require(ROOT .. '.collide.dispatch').kind
+local reserved = require(ROOT .. '.reserved')
 
 local draw = {}
 local scratch = {}
@@ -17,10 +18,14 @@ local function graphics(fname)
   return g
 end
 
-local function isBody(v) return type(v) == 'table' and (v.type == 'collider' or v.type == 'shape') end
+-- (a collider has its leaf cache `_single`; a shape its pose stamp and a registered kind)
+local function isBody(v)
+  return type(v) == 'table' and (v._shapes ~= nil and v._single ~= nil or v._pose ~= nil and kinds[v._kind] ~= nil)
+end
 
 local function checkBody(fname, v)
   if not isBody(v) then
+    reserved.check(fname, 'argument 1', v)
     check.fail(('%s: argument 1 must be a strike shape or collider, got %s'):format(fname, check.describe(v)))
   end
 end
@@ -33,7 +38,7 @@ end
 
 -- Apply fn(g, shape, a, b) to every leaf of a shape or collider.
 local function eachLeaf(g, body, fn, a, b)
-  if body.type == 'collider' then
+  if body._shapes then
     for s in body:elems() do fn(g, s, a, b) end
   else
     fn(g, body, a, b)
@@ -50,7 +55,9 @@ end
 
 -- A shape's outline: its kind's own (dispatch.kind[kind].outline), or its vertices.
 local function outline(g, s, mode)
-  local own = kinds[s.kind].outline
+  local kind = kinds[s._kind]
+  if not kind then reserved.badKind('strike:draw', s) end
+  local own = kind.outline
   if own then return own(g, s, mode) end
   local v, n = s:getVertices(scratch)
   if n == 2 then g.line(v[1], v[2], v[3], v[4]) else g.polygon(mode, v) end
@@ -87,7 +94,9 @@ end
 
 -- A shape's normals: its kind's own (dispatch.kind[kind].normals), or one per edge.
 local function shapeNormals(g, s, len)
-  local own = kinds[s.kind].normals
+  local kind = kinds[s._kind]
+  if not kind then reserved.badKind('strike.howNorms', s) end
+  local own = kind.normals
   if own then return own(g, s, len) end
   for i, x1, y1, x2, y2 in s:ipairs() do
     local nx, ny = s:getNormal(i)
@@ -211,7 +220,7 @@ end
 ---@param space table
 function draw.space(space)
   local g = graphics('strike.howSpace')
-  if type(space) ~= 'table' or space.type ~= 'space' or getmetatable(space) == nil then
+  if type(space) ~= 'table' or space._type ~= 'space' or getmetatable(space) == nil then
     check.fail(('strike.howSpace: argument 1 must be a space (S.pace()), got %s'):format(check.what(space)))
   end
   spaceBodies(g, space, listed)

@@ -18,6 +18,7 @@ local args = require(ROOT .. '.collide.args')
 local Shape = require(ROOT .. '.base.Shape')
 local Collider = require(ROOT .. '.colliders.Collider')
 local check = require(ROOT .. '.check')
+local reserved = require(ROOT .. '.reserved')
 local layout = require(ROOT .. '.base.layout')
 local COUNT, DIRTY = layout.COUNT, layout.DIRTY
 
@@ -60,21 +61,21 @@ function S.AT(shape1, shape2, out)
   -- (the argument checks ride on the lookups of the kernel: a shape is a table with a pose
   -- stamp and a registered kind; `out` may be nil or a table that is not one of strike's
   -- objects other than an MTV)
-  local row = type(shape1) == 'table' and shape1._pose ~= nil and pair[shape1.kind]
-  local ops = row and type(shape2) == 'table' and shape2._pose ~= nil and row[shape2.kind]
+  local row = type(shape1) == 'table' and shape1._pose ~= nil and pair[shape1._kind]
+  local ops = row and type(shape2) == 'table' and shape2._pose ~= nil and row[shape2._kind]
   if not ops then
     if not row then badShape('strike.AT', 1, shape1) end
     if type(shape2) ~= 'table' or not isShape(shape2) then badShape('strike.AT', 2, shape2) end
-    args.noKernel('strike.AT', shape1.kind, shape2.kind)
+    args.noKernel('strike.AT', shape1, shape2, shape1, shape2)
   end
   if out == nil then
     out = MTV()
-  elseif type(out) ~= 'table' or (out.type ~= 'mtv' and out.type ~= nil) then
+  elseif type(out) ~= 'table' or (out._type ~= 'mtv' and out._type ~= nil) then
     badOut('strike.AT', out, 3)
   end
   ops.collide(shape1, shape2, out)
-  out.collider = shape1.parent and root(shape1) or shape1
-  out.collided = shape2.parent and root(shape2) or shape2
+  out.collider = shape1._parent and root(shape1) or shape1
+  out.collided = shape2._parent and root(shape2) or shape2
   out._poseA, out._poseB = shape1._pose, shape2._pose
   return out
 end
@@ -95,7 +96,7 @@ local one1, one2 = {}, {} -- (one-slot leaf lists for bare shapes)
 
 -- A body's leaves: a collider's leaf list, or a bare shape in `one`.
 local function leavesOf(body, one)
-  if body.shapes then return Collider._leafList(body) end
+  if body._shapes then return Collider._leafList(body) end
   one[1] = body
   return one, 1
 end
@@ -168,7 +169,7 @@ end
 ---@return table|nil contacts
 function S.ite(mtv, out)
   checkMTV('strike.ite', mtv)
-  if out ~= nil and (type(out) ~= 'table' or out.type ~= nil) then -- (not a shape, collider or MTV)
+  if out ~= nil and (type(out) ~= 'table' or out._type ~= nil) then -- (not a shape, collider or MTV)
     fail(('strike.ite: argument 2 (out) must be a table for the contacts (a previous result, or {}), got %s')
       :format(what(out)))
   end
@@ -177,13 +178,14 @@ function S.ite(mtv, out)
   if type(a) ~= 'table' or not isShape(a) or type(b) ~= 'table' or not isShape(b) then
     local field, v = 'colliderShape', a
     if type(a) == 'table' and isShape(a) then field, v = 'collidedShape', b end
+    reserved.check('strike.ite', 'the MTV\'s ' .. field, v)
     fail(('strike.ite: the MTV must come from S.AT or S.triking (its %s is %s, not a strike shape)')
       :format(field, what(v)))
   end
-  local ops = pair[a.kind][b.kind]
-  if not ops then args.noKernel('strike.ite', a.kind, b.kind) end
+  local ops = pair[a._kind][b._kind]
+  if not ops then args.noKernel('strike.ite', a, b) end
   local c1, c2 = mtv.collider, mtv.collided
-  if a.kind ~= 'chain' and b.kind ~= 'chain' and (c1 ~= a or c2 ~= b) and type(c1) == 'table'
+  if a._kind ~= 'chain' and b._kind ~= 'chain' and (c1 ~= a or c2 ~= b) and type(c1) == 'table'
     and type(c2) == 'table' and (isCollider(c1) or isShape(c1)) and (isCollider(c2) or isShape(c2)) then
     -- bodies with several members between them: the outline's contacts
     local l1, n1 = leavesOf(c1, one1)
@@ -221,6 +223,7 @@ end
 local function checkSide(fname, mtv, field)
   local v = mtv[field]
   if type(v) ~= 'table' or not (isCollider(v) or isShape(v)) then
+    reserved.check(fname, 'the MTV\'s ' .. field, v)
     fail(('%s: the MTV\'s %s must be a strike collider or shape (as in an MTV from S.AT or S.triking), got %s')
       :format(fname, field, what(v)))
   end
@@ -264,7 +267,7 @@ local function checkBody(fname, v, i)
 end
 
 -- A collider without leaves: its box and circle are placeholders at (0, 0), not a place.
-local function empty(v) return v.type == 'collider' and v:getShapeCount() == 0 end
+local function empty(v) return v._single ~= nil and v:getShapeCount() == 0 end
 
 --- Bounding-circle test (centroid and radius) for colliders or shapes: true when the
 --- circles overlap (touching is not overlapping). An empty collider overlaps nothing.

@@ -40,7 +40,7 @@ function geom.pickDistance(body, px, py)
     local d
     if s:containsPoint(px, py) then
       d = 0
-    elseif s.kind == 'circle' then
+    elseif s:getKind() == 'circle' then
       local x, y = s:getCentroid()
       d = sqrt((px - x) ^ 2 + (py - y) ^ 2) - s:getRadius()
     else
@@ -52,7 +52,7 @@ function geom.pickDistance(body, px, py)
     end
     if d < best then best = d end
   end
-  if body.type == 'collider' then
+  if body.getShapeCount then
     for s in body:elems() do leaf(s) end
   else
     leaf(body)

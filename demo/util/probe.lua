@@ -116,7 +116,7 @@ local function markDistance(m, px, py)
 end
 
 local function eachLeaf(body, fn)
-  if body.type == 'collider' then
+  if body.getShapeCount then
     for s in body:elems() do fn(s) end
   else
     fn(body)
@@ -129,10 +129,10 @@ end
 local function fillRecord(s, rgb, label, order)
   local f = { rgb = rgb, label = label, order = order, shape = s }
   f.minx, f.miny, f.maxx, f.maxy = s:getBounds()
-  if s.kind == 'rounded' then
+  if s:getKind() == 'rounded' then
     f.core, f.n, f.coreFaces = coreOf(s)
     f.rounding = s:getRounding()
-  elseif s.kind == 'circle' then
+  elseif s:getKind() == 'circle' then
     f.cx, f.cy = s:getCentroid()
     f.radius = s:getRadius()
   else
@@ -164,12 +164,12 @@ end
 --- such as capsules included) become fills.
 function Model:fill(body, rgb, label)
   eachLeaf(body, function(s)
-    if s.kind == 'rounded' then
+    if s:getKind() == 'rounded' then
       self.fills[#self.fills + 1] = fillRecord(s, rgb, label, #self.fills + 1)
-    elseif s.kind == 'circle' and s:getRadius() == 0 then
+    elseif s:getKind() == 'circle' and s:getRadius() == 0 then
       local x, y = s:getCentroid()
       disc(self, x, y, 2)
-    elseif s.kind ~= 'circle' and s:getVertexCount() == 2 then
+    elseif s:getKind() ~= 'circle' and s:getVertexCount() == 2 then
       local x1, y1, x2, y2 = s:getEdge(1)
       segment(self, x1, y1, x2, y2, 2)
     else
@@ -181,9 +181,9 @@ end
 --- Painter method: outline a body (1 px).
 function Model:outline(body)
   eachLeaf(body, function(s)
-    if s.kind == 'rounded' then
+    if s:getKind() == 'rounded' then
       roundedLine(self, s, 1)
-    elseif s.kind == 'circle' then
+    elseif s:getKind() == 'circle' then
       local x, y = s:getCentroid()
       ring(self, x, y, s:getRadius(), 1)
     else
@@ -221,7 +221,7 @@ end
 function Model:norms(body, len)
   len = len or 15
   eachLeaf(body, function(s)
-    if s.kind == 'circle' then
+    if s:getKind() == 'circle' then
       local x, y = s:getCentroid()
       local r = s:getRadius()
       for k = 0, 7 do
@@ -230,7 +230,7 @@ function Model:norms(body, len)
       end
     else
       -- (a rounded shape's normals start on its boundary: its core's faces moved out)
-      local r = s.kind == 'rounded' and s:getRounding() or 0
+      local r = s:getKind() == 'rounded' and s:getRounding() or 0
       for i, x1, y1, x2, y2 in s:ipairs() do
         local nx, ny = s:getNormal(i)
         local mx, my = (x1 + x2) / 2 + nx * r, (y1 + y2) / 2 + ny * r

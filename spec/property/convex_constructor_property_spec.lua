@@ -27,7 +27,7 @@ local function same(a, b, x, y, where)
   for k = 1, #b._l do
     if a._l[k] ~= b._l[k] then error(('%s: local geometry %d differs'):format(where, k)) end
   end
-  assert(a.kind == b.kind, where .. ': kinds')
+  assert(a:getKind() == b:getKind(), where .. ': kinds')
 end
 
 -- A centre: near the origin, or far from it (where the rounding of coordinates is coarse).

@@ -107,8 +107,8 @@ end
 -- The plain two-sided edge test, the segment being an ordinary two-vertex polygon.
 local function plain(a, b)
   local out = S.MTV()
-  if a.kind == 'circle' then return sat.polygonCircle(b, a, out, true) end
-  if b.kind == 'circle' then return sat.polygonCircle(a, b, out) end
+  if a:getKind() == 'circle' then return sat.polygonCircle(b, a, out, true) end
+  if b:getKind() == 'circle' then return sat.polygonCircle(a, b, out) end
   return sat.polygonPolygon(a, b, out)
 end
 

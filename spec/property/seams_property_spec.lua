@@ -234,7 +234,7 @@ describe('seam properties', function()
       for _ = 1, 30 do
         local ox, oy = rng:range(x0 - 0.5 * E, x1 + 0.5 * E), rng:range(y0 - 0.5 * E, y1 + 0.5 * E)
         if rng:next() < 0.5 then -- (from a piece's centroid: often inside, rays cross cuts)
-          local pieces = c.shapes
+          local pieces = { c:unpack() }
           ox, oy = pieces[rng:int(1, #pieces)]:getCentroid()
         end
         local a = rng:range(-pi, pi)

@@ -531,7 +531,7 @@ local function runWorld(seed, index, stats, cfg)
       local a = rng:range(-pi, pi)
       x, y = w.cx + L * cos(a), w.cy + L * sin(a)
     end
-    if e and r < 0.6 and (not e.body.shapes or e.body:getShapeCount() > 0) then
+    if e and r < 0.6 and (not e.body.getShapeCount or e.body:getShapeCount() > 0) then
       local tx, ty = e.body:getCentroid()
       dx, dy = tx - x, ty - y
     end

@@ -314,7 +314,7 @@ end
 
 --- The first leaf of a body (itself for a shape; nil for an empty collider).
 function W.firstLeaf(body)
-  if not body.shapes then return body end
+  if not body.getShapeCount then return body end
   local iter, state = body:elems()
   return iter(state, nil)
 end
@@ -344,7 +344,7 @@ local function member(rng, c)
     if #kids == 0 then return nil end
     node = kids[rng:int(1, #kids)]
     depth = depth + 1
-  until node.shapes == nil or rng:next() < 0.5
+  until node.getShapeCount == nil or rng:next() < 0.5
   return node, depth
 end
 
@@ -461,7 +461,7 @@ function W:step(ops)
     local count = select('#', m.body:unpack())
     if count == 0 or (count == 1 and rng:next() < 0.7) then return 'none' end
     local child = m.body:remove(rng:int(1, count))
-    self:register(child, child.shapes and 'compound' or 'shape')
+    self:register(child, child.getShapeCount and 'compound' or 'shape')
     self.pool[#self.pool + 1] = child
     self.info[m.body].exact = false
     self:note('Collider:remove from %s (%d left)', self:describe(m.body), count - 1)

@@ -305,7 +305,7 @@ end
 function oracle.members(body)
   local list = {}
   local function add(s)
-    if s.kind == 'circle' then
+    if s:getKind() == 'circle' then
       local x, y = s:getCentroid()
       list[#list + 1] = { xs = { x }, ys = { y }, n = 1, r = s:getRadius() }
     else

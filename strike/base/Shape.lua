@@ -29,13 +29,17 @@ local number, positive, optPoint, finite, fail = check.number, check.positive, c
 local badSelf, type = check.badSelf, type
 
 ---@class strike.Shape : strike.Object
----@field parent strike.Collider|nil the collider holding this shape, if any
----@field kind string how the narrow phase treats it: 'polygon', 'circle' or 'chain' (a chain segment)
+---@field kind string the class's kind, how the narrow phase treats its instances: 'polygon', 'circle' or
+--- 'chain' (a chain segment); a rounded instance's is 'rounded' (getKind)
 ---@field name string the class name, as S.hapes names it
 ---@field type string always 'shape'
 local Shape = Object:extend()
 Shape.type = 'shape'
 Shape.name = 'Shape'
+--- The class marker strike reads (an instance's `type`, `name` and `kind` are the game's to
+--- set: strike reads those from the class, and its own fields start with `_`; see
+--- strike/reserved.lua).
+Shape._type = 'shape'
 
 --- What every shape class must provide (the base class provides the transforms and the
 --- getters of the pose). `kind` must name a kind registered in strike/collide/dispatch.lua.
@@ -65,6 +69,21 @@ function Shape.checkClass(cls, what)
   complete[cls] = true
 end
 
+-- The spaces bodies are in, each with its Space:_moved (strike/space/Space.lua fills it as
+-- it adds bodies): a body's `_space` is checked against it, so that a game's value there is
+-- an error naming the field (see Shape:_touch).
+local spaces = setmetatable({}, { __mode = 'k' })
+Shape._spaces = spaces
+
+-- The failure path of Shape:_touch, Collider's invalidate and rootOf: a `_parent` that is no
+-- collider, or a `_space` that is no space. Names the field (strike/reserved.lua).
+local function badLink(body)
+  local reserved = require(ROOT .. '.reserved')
+  reserved.check('strike', 'the ' .. (reserved.classType(body) or 'body'), body)
+  fail('strike: a body has a _parent or _space that strike did not set; ' .. reserved.RULE)
+end
+Shape._badLink = badLink
+
 -- A counter that stamps every pose: a shape's `_pose` changes whenever it moves, so a
 -- result computed for one pose can tell that it is stale (see S.ite).
 local poses = 0
@@ -77,8 +96,10 @@ function Shape:_setPose(x, y)
   -- (a shape of an incomplete class would fail deep inside the first test that meets it;
   -- the message is made only for a class not yet found complete)
   local cls = getmetatable(self)
-  if not complete[cls] then Shape.checkClass(cls, ('strike.%s: its class'):format(tostring(self.name))) end
-  self.kind = self.kind -- an own copy of the class's kind: the dispatch reads it every test
+  if not complete[cls] then Shape.checkClass(cls, ('strike.%s: its class'):format(tostring(cls.name))) end
+  -- an own copy of the class's kind (or of the one a rounded shape set): the dispatch reads
+  -- it every test
+  if rawget(self, '_kind') == nil then self._kind = cls.kind end
   -- (an own `_seams`, false unless a compound marks faces: the collider queries read it per
   -- leaf, and a missing field would cost a walk up the class chain; see VertexShape.lua)
   if rawget(self, '_seams') == nil then self._seams = false end
@@ -196,25 +217,37 @@ end
 --- queues it there. The walk always reaches the root of a body the space has refreshed
 --- since its last move, since refreshing it cleans every collider in it; when it stops
 --- earlier, the root was already stale, so already queued.
+---
+--- (A `_parent` or `_space` a game changed is an error here: every collider has flags, true
+--- or false, so a parent without them is none; a space is one `spaces` knows.)
 function Shape:_touch()
   self[DIRTY] = true
   poses = poses + 1
   self._pose = poses
-  local p = self.parent
+  local p = self._parent
   if not p then
     local space = self._space
-    if space then space:_moved(self) end
+    if space then
+      local moved = spaces[space]
+      if not moved then badLink(self) end
+      moved(space, self)
+    end
     return
   end
   while p and (p._massOK or p._clean) do
     p._massOK, p._clean = false, false
-    local up = p.parent
+    local up = p._parent
     if not up then
       local space = p._space
-      if space then space:_moved(p) end
+      if space then
+        local moved = spaces[space]
+        if not moved then badLink(self) end
+        moved(space, p)
+      end
     end
     p = up
   end
+  if p and p._clean == nil then badLink(self) end
 end
 
 --- Move by (dx, dy).
@@ -367,8 +400,14 @@ end
 
 -- The outermost collider holding `node`, a shape or a collider, or `node` itself: getRoot
 -- without its check of `self`, for S.AT and S.triking.
+-- (every collider has its flag `_clean`: a `_parent` without one is a game's value)
 local function rootOf(node)
-  while node.parent do node = node.parent end
+  local up = node._parent
+  while up do
+    if up._clean == nil then badLink(node) end
+    node = up
+    up = node._parent
+  end
   return node
 end
 Shape._rootOf = rootOf
@@ -378,6 +417,22 @@ Shape._rootOf = rootOf
 function Shape:getRoot()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getRoot') end
   return rootOf(self)
+end
+
+--- The collider holding this shape directly, or nil (the original Strike's `shape.parent`).
+---@return strike.Collider|nil
+function Shape:getParent()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getParent') end
+  return self._parent
+end
+
+--- The kind the narrow phase treats this shape as: its class's `kind` ('polygon', 'circle',
+--- 'chain', or one a game registers), or 'rounded' for a rounded polygon (a capsule, a
+--- rectangle or polygon with a radius).
+---@return string
+function Shape:getKind()
+  if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getKind') end
+  return self._kind
 end
 
 --- An independent copy of the same class, in the same pose; then, if given, moved so its
@@ -395,7 +450,7 @@ function Shape:copy(x, y, angle)
   for k = 1, #self do c[k] = self[k] end -- (the array part first, so it stays an array)
   for k, v in pairs(self) do
     -- (rawget: an own field may shadow the class's; a copy is in no space)
-    if rawget(c, k) == nil and k ~= 'parent' and k ~= '_space' and k ~= '_sid' then c[k] = v end
+    if rawget(c, k) == nil and k ~= '_parent' and k ~= '_space' and k ~= '_sid' then c[k] = v end
   end
   -- (local geometry is never changed after construction, so copies share it)
   c[DIRTY] = true

@@ -63,7 +63,7 @@ VertexShape._shortName = 'shortest edge'
 
 --- The empty instance `Class(...)` fills (class.lua): room for the slots of `n` vertices (by
 --- default 5; a polygon with more grows once) and for a polygon's named fields (8: its own
---- are _pose, _l, _seams and kind, then `parent`, or a space's two, and a subclass's few).
+--- are _pose, _l, _seams and _kind, then `_parent`, or a space's two, and a subclass's few).
 --- Subclasses that know their vertex count from their arguments pass it (ConvexPolygon,
 --- RegularPolygon): a table that grows is laid out anew, and LuaJIT's compiled field reads
 --- then meet two layouts of the same class where they would meet one.
@@ -167,7 +167,7 @@ end
 function VertexShape:_setRounding(r)
   self[ROUND] = r + 0.0
   self[RADIUS] = self[RADIUS] + r
-  self.kind = 'rounded'
+  self._kind = 'rounded'
   self[DIRTY] = true
 end
 
@@ -287,7 +287,7 @@ function VertexShape:getVertices(out)
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getVertices') end
   if self[DIRTY] then self:_refresh() end
   out = out or {}
-  if type(out) ~= 'table' or out.type ~= nil then check.badOut('strike.Shape:getVertices', out) end
+  if type(out) ~= 'table' or out._type ~= nil then check.badOut('strike.Shape:getVertices', out) end
   local n = self[COUNT]
   for i = 1, n do
     local k = STRIDE * i + BASE

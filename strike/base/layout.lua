@@ -47,8 +47,9 @@
 ---   LG1X ... LG2Y       the same, local (unrotated)                       set at construction
 ---   LPREVX, LPREVY, LNEXTX, LNEXTY  the ghost vertices, local (0 when absent)
 ---
---- Everything else a shape keeps (its local geometry `_l`, its pose stamp `_pose`, its kind,
---- its class's own data) is in named fields; a shape's integer keys are strike's alone.
+--- Everything else a shape keeps (its local geometry `_l`, its pose stamp `_pose`, its kind
+--- `_kind`, its class's own data) is in named fields starting with `_`; a shape's integer keys
+--- are strike's alone, and every other name is the game's (strike/reserved.lua).
 ---
 --- A collider (colliders/Collider.lua) keeps its cached aggregates in its own array part
 --- too, so that moving one reads and writes a few adjacent numbers instead of a dozen
@@ -67,6 +68,8 @@
 ---                             (of the sums in 9-15, a translation keeps current only those the
 ---                             centroid comes from: Collider.lua, shift)
 ---   16      CANGLE            the angle (the sum of its rotations)
+---   17      CCOUNT            the number of leaves below it       (`_massOK` or `_clean`:
+---                                                                  both set it)
 local layout = {}
 
 --- The bounds' slots.
@@ -90,9 +93,9 @@ layout.HEADER = 23
 --- A collider's slots (see above).
 layout.CRADIUS, layout.CAREA, layout.CAX, layout.CAY = 7, 8, 9, 10
 layout.CLEN, layout.CLX, layout.CLY, layout.CSX, layout.CSY = 11, 12, 13, 14, 15
-layout.CANGLE = 16
+layout.CANGLE, layout.CCOUNT = 16, 17
 --- Number of a collider's slots.
-layout.CSIZE = 16
+layout.CSIZE = 17
 
 --- A chain segment's slots, after its two vertex records (see above).
 layout.HASPREV, layout.HASNEXT, layout.CONVEX1, layout.CONVEX2 = 34, 35, 36, 37

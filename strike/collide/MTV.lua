@@ -29,6 +29,7 @@ local limits = require(ROOT .. '.limits')
 local MTV = Object:extend()
 MTV.name = 'MTV'
 MTV.type = 'mtv'
+MTV._type = 'mtv' -- (the class marker strike reads: strike/reserved.lua)
 
 --- A new MTV: vector (dx, dy) (default 0, 0) between two shapes.
 ---@param dx number|nil
@@ -60,14 +61,14 @@ end
 --- Length of the vector.
 ---@return number
 function MTV:mag()
-  if type(self) ~= 'table' or self.type ~= 'mtv' then badSelf(self, 'strike.MTV:mag') end
+  if type(self) ~= 'table' or self._type ~= 'mtv' then badSelf(self, 'strike.MTV:mag') end
   return limits.length(self.x, self.y)
 end
 
 --- Squared length of the vector.
 ---@return number
 function MTV:mag2()
-  if type(self) ~= 'table' or self.type ~= 'mtv' then badSelf(self, 'strike.MTV:mag2') end
+  if type(self) ~= 'table' or self._type ~= 'mtv' then badSelf(self, 'strike.MTV:mag2') end
   return self.x * self.x + self.y * self.y
 end
 
@@ -75,7 +76,7 @@ end
 ---@param s number
 ---@return self
 function MTV:scale(s)
-  if type(self) ~= 'table' or self.type ~= 'mtv' then badSelf(self, 'strike.MTV:scale') end
+  if type(self) ~= 'table' or self._type ~= 'mtv' then badSelf(self, 'strike.MTV:scale') end
   check.number(s, 'strike.MTV:scale', 'factor')
   self.x, self.y = self.x * s, self.y * s
   return self
@@ -84,42 +85,42 @@ end
 ---@param collider table
 ---@return self
 function MTV:setCollider(collider)
-  if type(self) ~= 'table' or self.type ~= 'mtv' then badSelf(self, 'strike.MTV:setCollider') end
+  if type(self) ~= 'table' or self._type ~= 'mtv' then badSelf(self, 'strike.MTV:setCollider') end
   self.collider = collider
   return self
 end
 ---@param collided table
 ---@return self
 function MTV:setCollided(collided)
-  if type(self) ~= 'table' or self.type ~= 'mtv' then badSelf(self, 'strike.MTV:setCollided') end
+  if type(self) ~= 'table' or self._type ~= 'mtv' then badSelf(self, 'strike.MTV:setCollided') end
   self.collided = collided
   return self
 end
 ---@param shape strike.Shape
 ---@return self
 function MTV:setColliderShape(shape)
-  if type(self) ~= 'table' or self.type ~= 'mtv' then badSelf(self, 'strike.MTV:setColliderShape') end
+  if type(self) ~= 'table' or self._type ~= 'mtv' then badSelf(self, 'strike.MTV:setColliderShape') end
   self.colliderShape = shape
   return self
 end
 ---@param shape strike.Shape
 ---@return self
 function MTV:setCollidedShape(shape)
-  if type(self) ~= 'table' or self.type ~= 'mtv' then badSelf(self, 'strike.MTV:setCollidedShape') end
+  if type(self) ~= 'table' or self._type ~= 'mtv' then badSelf(self, 'strike.MTV:setCollidedShape') end
   self.collidedShape = shape
   return self
 end
 ---@param index integer
 ---@return self
 function MTV:setEdgeIndex(index)
-  if type(self) ~= 'table' or self.type ~= 'mtv' then badSelf(self, 'strike.MTV:setEdgeIndex') end
+  if type(self) ~= 'table' or self._type ~= 'mtv' then badSelf(self, 'strike.MTV:setEdgeIndex') end
   self.edgeIndex = index
   return self
 end
 ---@param separating boolean
 ---@return self
 function MTV:setSeparating(separating)
-  if type(self) ~= 'table' or self.type ~= 'mtv' then badSelf(self, 'strike.MTV:setSeparating') end
+  if type(self) ~= 'table' or self._type ~= 'mtv' then badSelf(self, 'strike.MTV:setSeparating') end
   self.separating = separating and true or false
   return self
 end
@@ -140,7 +141,7 @@ MTV._set = copy
 ---@param other strike.MTV
 ---@return self
 function MTV:set(other)
-  if type(self) ~= 'table' or self.type ~= 'mtv' then badSelf(self, 'strike.MTV:set') end
+  if type(self) ~= 'table' or self._type ~= 'mtv' then badSelf(self, 'strike.MTV:set') end
   if type(other) ~= 'table' or type(other.x) ~= 'number' or type(other.y) ~= 'number' then
     check.fail(('strike.MTV:set: argument 1 must be an MTV, got %s'):format(check.describe(other)))
   end

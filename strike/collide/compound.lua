@@ -17,7 +17,7 @@ local Collider = require(ROOT .. '.colliders.Collider')
 local layout = require(ROOT .. '.base.layout')
 local DIRTY = layout.DIRTY
 local dispatch = require(ROOT .. '.collide.dispatch')
-local pair, collideOf = dispatch.pair, dispatch.collide
+local pair, collideOf, kinds = dispatch.pair, dispatch.collide, dispatch.kind
 local args = require(ROOT .. '.collide.args')
 local outline = require(ROOT .. '.collide.outline')
 local resolve, feature = outline.resolve, outline.feature
@@ -32,7 +32,7 @@ local badBody, badOut = args.badBody, args.badOut
 local FNAME = 'strike.triking'
 
 -- Does a leaf take part in the outline rule? Every kind but chain segments.
-local function solid(s) return s.kind ~= 'chain' end
+local function solid(s) return s._kind ~= 'chain' end
 
 local compound = {}
 
@@ -63,16 +63,16 @@ function compound.collide(body1, body2, out)
   -- (its own field) from a shape (a pose stamp and a registered kind) from anything else.
   local s1, s2 = body1._single, body2._single
   if s1 == nil then
-    if body1._pose == nil or not pair[body1.kind] then badBody(FNAME, 1, body1) end
+    if body1._pose == nil or not pair[body1._kind] then badBody(FNAME, 1, body1) end
     s1 = body1
   end
   if s2 == nil then
-    if body2._pose == nil or not pair[body2.kind] then badBody(FNAME, 2, body2) end
+    if body2._pose == nil or not pair[body2._kind] then badBody(FNAME, 2, body2) end
     s2 = body2
   end
-  if out ~= nil and (type(out) ~= 'table' or (out.type ~= 'mtv' and out.type ~= nil)) then badOut(FNAME, out, 3) end
-  local r1 = body1.parent and root(body1) or body1
-  local r2 = body2.parent and root(body2) or body2
+  if out ~= nil and (type(out) ~= 'table' or (out._type ~= 'mtv' and out._type ~= nil)) then badOut(FNAME, out, 3) end
+  local r1 = body1._parent and root(body1) or body1
+  local r2 = body2._parent and root(body2) or body2
   if r1 == r2 then return false end -- every leaf pair would share a root
   if s1 and s2 then
     -- One leaf each, the common case: straight-line code (LuaJIT traces one-trip loops
@@ -82,8 +82,9 @@ function compound.collide(body1, body2, out)
     if s1[MAXX] < s2[MINX] or s2[MAXX] < s1[MINX] or s1[MAXY] < s2[MINY] or s2[MAXY] < s1[MINY] then
       return false -- the bounds do not even meet
     end
-    local collide = collideOf[s1.kind][s2.kind]
-    if not collide then args.noKernel(FNAME, s1.kind, s2.kind) end
+    -- (an empty row for a `_kind` a game changed: noKernel says so)
+    local collide = collideOf[s1._kind][s2._kind]
+    if not collide then args.noKernel(FNAME, s1, s2, body1, body2) end
     local m = collide(s1, s2, out or tmpA)
     if not (m.depth > 0) then return false end -- luacheck: ignore 581 (NaN reads as no collision)
     if not out then out = MTV._set(MTV(), m) end
@@ -104,7 +105,7 @@ function compound.collide(body1, body2, out)
     local a = l1[i]
     if a[DIRTY] then a:_refresh() end
     local ax0, ay0, ax1, ay1 = a[MINX], a[MINY], a[MAXX], a[MAXY]
-    local row = collideOf[a.kind]
+    local row = collideOf[a._kind]
     for j = 1, n2 do
       local b = l2[j]
       if b[DIRTY] then b:_refresh() end
@@ -112,11 +113,11 @@ function compound.collide(body1, body2, out)
       -- the narrow phase decides touching), as two tests instead of four: fewer trace
       -- exits under LuaJIT.
       if min(ax1, b[MAXX]) >= max(ax0, b[MINX]) and min(ay1, b[MAXY]) >= max(ay0, b[MINY]) then
-        if a.kind == 'chain' or b.kind == 'chain' then
+        if a._kind == 'chain' or b._kind == 'chain' then
           chains = true
         else
-          local collide = row[b.kind]
-          if not collide then args.noKernel(FNAME, a.kind, b.kind) end
+          local collide = row[b._kind]
+          if not collide then args.noKernel(FNAME, a, b, body1, body2) end
           collide(a, b, tmp)
           local d = tmp.depth
           if d > 0 then -- (false for NaN and for separating results)
@@ -130,6 +131,13 @@ function compound.collide(body1, body2, out)
   -- Several members: the shortest push out of them all (outline.lua), unless the deepest
   -- pair's own is that already.
   if found > 0 and n1 + n2 > 2 then
+    -- (the outline reads every member's kind: one a game changed is an error, not a solid)
+    for i = 1, n1 do
+      if not kinds[l1[i]._kind] then args.noKernel(FNAME, l1[i], l2[1], body1, body2) end
+    end
+    for j = 1, n2 do
+      if not kinds[l2[j]._kind] then args.noKernel(FNAME, l1[1], l2[j], body1, body2) end
+    end
     resolve(best, l1, n1, l2, n2)
     bestDepth = best.depth
   end
@@ -137,14 +145,14 @@ function compound.collide(body1, body2, out)
     for i = 1, n1 do
       local a = l1[i]
       local ax0, ay0, ax1, ay1 = a[MINX], a[MINY], a[MAXX], a[MAXY]
-      local row = collideOf[a.kind]
-      local chainA = a.kind == 'chain'
+      local row = collideOf[a._kind]
+      local chainA = a._kind == 'chain'
       for j = 1, n2 do
         local b = l2[j]
-        if (chainA or b.kind == 'chain')
+        if (chainA or b._kind == 'chain')
           and min(ax1, b[MAXX]) >= max(ax0, b[MINX]) and min(ay1, b[MAXY]) >= max(ay0, b[MINY]) then
-          local collide = row[b.kind]
-          if not collide then args.noKernel(FNAME, a.kind, b.kind) end
+          local collide = row[b._kind]
+          if not collide then args.noKernel(FNAME, a, b, body1, body2) end
           collide(a, b, tmp)
           local d = tmp.depth
           if d > bestDepth then best, tmp, bestDepth, found = tmp, best, d, found + 1 end

@@ -343,7 +343,7 @@ local function solidBounds(list, n)
   local x0, y0, x1, y1 = huge, huge, -huge, -huge
   for i = 1, n do
     local s = list[i]
-    if s.kind ~= 'chain' then
+    if s._kind ~= 'chain' then
       if s[MINX] < x0 then x0 = s[MINX] end
       if s[MINY] < y0 then y0 = s[MINY] end
       if s[MAXX] > x1 then x1 = s[MAXX] end
@@ -383,7 +383,7 @@ function outline.resolve(best, l1, n1, l2, n2)
   local ly, hy = ty < uy and ty or uy, ty < uy and uy or ty
   for j = 1, n2 do
     local b = l2[j]
-    if b.kind ~= 'chain' then
+    if b._kind ~= 'chain' then
       -- b's bounds over both moves, less the tolerance: a member whose bounds do not reach
       -- into them overlaps b by less than that after either move (touching members, such as
       -- the tiles a box has just been lifted onto, need no difference)
@@ -391,7 +391,7 @@ function outline.resolve(best, l1, n1, l2, n2)
       local x1, y1 = b[MAXX] + hx - tolerance, b[MAXY] + hy - tolerance
       for i = 1, n1 do
         local a = l1[i]
-        if a[MAXX] > x0 and a[MINX] < x1 and a[MAXY] > y0 and a[MINY] < y1 and a.kind ~= 'chain' then
+        if a[MAXX] > x0 and a[MINX] < x1 and a[MAXY] > y0 and a[MINY] < y1 and a._kind ~= 'chain' then
           addDifference(a, b)
         end
       end
@@ -413,10 +413,10 @@ function outline.resolve(best, l1, n1, l2, n2)
   nDiff, nVert = 0, 0
   for i = 1, n1 do
     local a = l1[i]
-    if a.kind ~= 'chain' then
+    if a._kind ~= 'chain' then
       for j = 1, n2 do
         local b = l2[j]
-        if b.kind ~= 'chain' and a[MINX] - b[MAXX] < reach and b[MINX] - a[MAXX] < reach
+        if b._kind ~= 'chain' and a[MINX] - b[MAXX] < reach and b[MINX] - a[MAXX] < reach
           and a[MINY] - b[MAXY] < reach and b[MINY] - a[MAXY] < reach then
           addDifference(a, b)
         end

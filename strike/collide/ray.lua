@@ -46,6 +46,7 @@ local check = require(ROOT .. '.check')
 local layout = require(ROOT .. '.base.layout')
 local COUNT, DIRTY, RADIUS, SCALE = layout.COUNT, layout.DIRTY, layout.RADIUS, layout.SCALE
 local kinds = require(ROOT .. '.collide.dispatch').kind
+local badKind = require(ROOT .. '.reserved').badKind
 local limits = require(ROOT .. '.limits')
 
 local X, Y, R = layout.X, layout.Y, layout.R
@@ -374,7 +375,9 @@ local function span(s, ox, oy, ux, uy)
   local rad = s[RADIUS] * s[SCALE]
   if not (abs(dx) + abs(dy) > FAR * rad) or rad == 0 then -- luacheck: ignore 581 (inf is far)
     shiftT, shiftX, shiftY, shiftFar, shiftNear = 0, ox, oy, 0, 0
-    return kinds[s.kind].ray(s, ox, oy, ux, uy)
+    local kind = kinds[s._kind]
+    if not kind then badKind('strike', s) end -- (a `_kind` a game changed)
+    return kind.ray(s, ox, oy, ux, uy)
   end
   local t0 = dx * ux + dy * uy -- (far away: no point of the shape is within 2 radii of the origin)
   if not (t0 > 2 * rad) or t0 == huge then return nil end -- luacheck: ignore 581 (behind, or overflowed)
@@ -382,7 +385,9 @@ local function span(s, ox, oy, ux, uy)
   local t1 = (s[X] - px) * ux + (s[Y] - py) * uy - 2 * rad -- (at the shape's scale: exact enough)
   px, py = px + t1 * ux, py + t1 * uy
   shiftT, shiftX, shiftY, shiftFar, shiftNear = t0 + t1, px, py, t0, t1
-  return kinds[s.kind].ray(s, px, py, ux, uy)
+  local kind = kinds[s._kind]
+  if not kind then badKind('strike', s) end
+  return kind.ray(s, px, py, ux, uy)
 end
 
 --- The interval lo, hi of the ray inside any shape, and the normals at its ends (see the

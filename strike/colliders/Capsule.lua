@@ -23,14 +23,14 @@ Capsule.name = 'Capsule'
 function Capsule:new(x, y, dx, dy, angle)
   if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.Capsule:new') end
   Collider.new(self, CapsuleShape(x, y, dx, dy, angle))
-  self[layout.CANGLE] = self.shapes[1][layout.ANGLE]
+  self[layout.CANGLE] = self._shapes[1][layout.ANGLE]
 end
 
 --- Width and height (caps included), as they are now.
 ---@return number width, number height
 function Capsule:getDimensions()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Capsule:getDimensions') end
-  local s = self.shapes[1]
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Capsule:getDimensions') end
+  local s = (self:unpack())
   if not s or not s.getDimensions then return 0, 0 end
   return s:getDimensions()
 end

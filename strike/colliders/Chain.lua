@@ -91,7 +91,7 @@ end
 --- Whether the chain is closed (its last point joined back to the first).
 ---@return boolean
 function Chain:isLoop()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Chain:isLoop') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Chain:isLoop') end
   return self._loop
 end
 

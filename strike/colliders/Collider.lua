@@ -16,25 +16,40 @@
 ---   `_pose` (shape)       a stamp, not a flag: a new    the same                     (read by S.ite against the
 ---                         number on every move                                       MTV's `_poseA`, `_poseB`)
 ---   `_nleaves` >= 0       the flat leaf list `_leaves`, invalidate(): add, remove,   refreshLeaves (via _leafList,
----     (collider; -1       its length `_nleaves`,        consolidate                  elems, getShapeCount, the
----     when stale)         `_leafPos` (made by the first                              transforms, rays, project,
----                         elems) and `_single` (the                                  containsPoint, refreshMass)
----                         only leaf or false;
+---     (collider; -1       its length `_nleaves`,        consolidate, on the          elems, getShapeCount, the
+---     when stale)         `_leafPos` (made by the first collider changed and every   transforms, rays, project,
+---                         elems) and `_single` (the     one holding it               containsPoint, radius), for
+---                         only leaf or false;                                        the collider asked only
 ---                         S.triking's fast path)
 ---   `_massOK`             area and centroid (slots:     invalidate(), and            refreshMass (getArea,
----     (collider)          layout.lua)                   Shape:_touch of any leaf     getCentroid, getAreaCentroid)
----                                                       below it
----   `_clean` (collider)   bounds and radius (slots)     the same as `_massOK`        refresh (getBbox, getBounds,
----                                                                                    getRadius, calcAreaCentroid)
+---     (collider)          layout.lua), and the slot     Shape:_touch of any leaf     getCentroid, getAreaCentroid)
+---                         CCOUNT, its number of leaves  below it
+---   `_clean` (collider)   bounds and radius (slots),    the same as `_massOK`        refresh (getBbox, getBounds,
+---                         and CCOUNT too                                             getRadius, calcAreaCentroid)
 ---
---- Invariant: when a collider's flag is false, so is that flag on every enclosing collider.
---- Clearing keeps it by walking up from the change to the root, and may stop at the first
---- collider whose flags are already false (everything above it is false too). Refreshing
---- keeps it by working bottom-up: a collider refreshes its stale nested colliders first,
---- and refreshing an inner collider alone leaves the outer ones stale, which is allowed.
+--- Invariant: when a collider's `_massOK` or `_clean` is false, so is that flag on every
+--- enclosing collider. Clearing keeps it by walking up from the change to the root, and a
+--- move (Shape:_touch) may stop at the first collider whose flags are already false
+--- (everything above it is false too). Refreshing keeps it by working bottom-up: a collider
+--- refreshes its stale nested colliders first, and refreshing an inner collider alone
+--- leaves the outer ones stale, which is allowed. A leaf list is made for the collider that
+--- is asked for it, from a walk over everything it holds: the lists of the colliders nested
+--- in it are left as they are (stale until they are asked), so that a chain of colliders
+--- nested n deep costs O(n), not one list per level; a change of members (invalidate)
+--- therefore clears the lists all the way up to the root.
 --- Transforms of a collider need only the leaf list, so moving a collider every frame
 --- costs one world-data refresh per leaf, at the next query. spec/cache_spec.lua checks
 --- every query on an outer collider after every change to a leaf of an inner one.
+---
+--- Depth. No walk over the tree recurses deeper than a few levels, so colliders nest to
+--- any depth on every VM (spec/nesting_spec.lua: 20,000): refreshLeaves, copy, consolidate
+--- and the diagnosis of a changed field are loops with an explicit stack; refreshMass,
+--- refresh, shift and addAngle call themselves for the first SHALLOW levels below the
+--- collider asked (the fastest way for the colliders games build, a level or two deep) and
+--- hand the rest to such a loop; invalidate, Shape:_touch and getRoot walk up in a loop. The
+--- loops share one stack, `walk`, from its slot `top` up, so that a walk that calls out (a
+--- leaf's getAreaCentroid, a shape's copy) and meets another walk stays correct. A walk
+--- allocates nothing once the stack has grown to the deepest tree walked.
 local ROOT = (...):match('^(.-)%.colliders%.[^%.]+$')
 local Object = require(ROOT .. '.class')
 local Shape = require(ROOT .. '.base.Shape')
@@ -43,6 +58,7 @@ local compat = require(ROOT .. '.compat')
 local unpack, tnew = compat.unpack, compat.tableNew
 local rotate = require(ROOT .. '.vec').rotate
 local checkPose = Shape._checkPose
+local spaces, badLink = Shape._spaces, Shape._badLink
 local layout = require(ROOT .. '.base.layout')
 local RADIUS, SCALE = layout.RADIUS, layout.SCALE
 local args = require(ROOT .. '.collide.args')
@@ -56,18 +72,41 @@ local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAX
 local CRADIUS, CAREA, CAX, CAY = layout.CRADIUS, layout.CAREA, layout.CAX, layout.CAY
 local CLEN, CLX, CLY, CSX, CSY = layout.CLEN, layout.CLX, layout.CLY, layout.CSX, layout.CSY
 local DIRTY = layout.DIRTY
-local CANGLE, CSIZE = layout.CANGLE, layout.CSIZE
+local CANGLE, CCOUNT, CSIZE = layout.CANGLE, layout.CCOUNT, layout.CSIZE
+
+-- The walks' shared stack (see "Depth" above): a walk uses the slots above `top` and puts
+-- `top` back when it is done, clearing what it put there.
+local walk, top = {}, 0
 
 ---@class strike.Collider : strike.Object
----@field shapes (strike.Shape|strike.Collider)[] the direct children, in order
----@field parent strike.Collider|nil the enclosing collider, if any
 ---@field type string always 'collider'
+---@field name string the class name, as S.trikers names it
 local Collider = Object:extend()
 Collider.type = 'collider'
 Collider.name = 'Collider'
+--- The class marker strike reads (see Shape._type). A collider's own fields are `_shapes`, its
+--- children (unpack), `_parent` (getParent) and its caches below; every other name that does
+--- not start with `_` is the game's.
+Collider._type = 'collider'
 
 local function isShape(v) return type(v) == 'table' and getmetatable(v) ~= nil and Object.is(v, Shape) end
 local function isCollider(v) return type(v) == 'table' and getmetatable(v) ~= nil and Object.is(v, Collider) end
+
+-- The failure path of a collider's list of children that is not its own (`_shapes`, whose
+-- slot 0 names the collider), or of a member whose `_parent` does not hold it: a game's value
+-- in a field of strike's is an error naming the field (strike/reserved.lua).
+local function badShapes(self, fname)
+  local reserved = require(ROOT .. '.reserved')
+  reserved.check(fname, 'the ' .. (reserved.classType(self) or 'collider'), self)
+  fail(('%s: the collider\'s fields starting with _ are not as strike left them; %s'):format(fname, reserved.RULE))
+end
+
+-- The list of the children of `self` (the collider of a method that checked it), checked.
+local function childrenOf(self, fname)
+  local shapes = self._shapes
+  if type(shapes) ~= 'table' or shapes[0] ~= self then badShapes(self, fname) end
+  return shapes
+end
 
 -- The cache slots and flags, all stale (see the cache protocol above), laid out once, at
 -- construction, so that the object's fields never move.
@@ -84,7 +123,7 @@ end
 ---@param ... strike.Shape|strike.Collider
 function Collider:new(...)
   if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.Collider:new') end
-  self.shapes = {}
+  self._shapes = { [0] = self } -- (slot 0: the list's owner, see childrenOf)
   startCaches(self)
   self:add(...)
 end
@@ -94,19 +133,26 @@ end
 ---@return table
 function Collider._alloc()
   if tnew then return tnew(CSIZE, 8) end
-  return { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 }
+  return { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 }
 end
 
--- The structure changed: clear every flag here and on every enclosing collider (and, when
--- the walk reaches a root in a space, queue it there, as Shape:_touch does).
+-- The structure changed: clear every flag here and on every enclosing collider, up to the
+-- root (the leaf lists of the colliders between may be stale already: see the cache
+-- protocol), and, when the walk reaches a root in a space, queue it there, as Shape:_touch
+-- does.
 local function invalidate(self)
   local p = self
-  while p and (p._nleaves >= 0 or p._massOK or p._clean) do
+  while p do
+    if p._clean == nil then badLink(self) end -- (a `_parent` a game set: see Shape:_touch)
     p._nleaves, p._massOK, p._clean, p._single = -1, false, false, false
-    local up = p.parent
+    local up = p._parent
     if not up then
       local space = p._space
-      if space then space:_moved(p) end
+      if space then
+        local moved = spaces[space]
+        if not moved then badLink(self) end
+        moved(space, p)
+      end
     end
     p = up
   end
@@ -116,9 +162,10 @@ end
 ---@param ... strike.Shape|strike.Collider
 ---@return self
 function Collider:add(...)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:add') end
-  local shapes = self.shapes
-  if not shapes then shapes = {}; self.shapes = shapes end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:add') end
+  local shapes = self._shapes
+  if not shapes then shapes = { [0] = self }; self._shapes = shapes end
+  if type(shapes) ~= 'table' or shapes[0] ~= self then badShapes(self, 'strike.Collider:add') end
   if self._single == nil then
     -- (a collider whose constructor adds without calling Collider.new, as the original
     -- Strike's walkthrough does: its caches start here)
@@ -136,7 +183,11 @@ function Collider:add(...)
     elseif child._single == nil then
       args.badBody('strike.Collider:add', i, child)
     end
-    if child.parent then
+    if child._parent or rawget(child, '_space') or rawget(child, '_sid') ~= nil then
+      -- (a `_parent`, `_space` or `_sid` the game set is an error naming it)
+      require(ROOT .. '.reserved').check('strike.Collider:add', 'argument ' .. i, child)
+    end
+    if child._parent then
       fail(('strike.Collider:add: argument %d already belongs to a collider; remove it first or add a copy'):format(i))
     end
     if rawget(child, '_space') then
@@ -150,12 +201,13 @@ function Collider:add(...)
     local p = self
     while p do
       if p == child then fail(('strike.Collider:add: argument %d would contain itself'):format(i)) end
-      p = p.parent
+      p = p._parent
+      if p and p._clean == nil then badShapes(self, 'strike.Collider:add') end -- (a `_parent` a game set)
     end
   end
   for i = 1, select('#', ...) do
     local child = select(i, ...)
-    child.parent = self
+    child._parent = self
     shapes[#shapes + 1] = child
   end
   invalidate(self)
@@ -168,8 +220,8 @@ end
 ---@param ... integer
 ---@return strike.Shape|strike.Collider ...
 function Collider:remove(index, ...)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:remove') end
-  local shapes = self.shapes or {}
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:remove') end
+  local shapes = childrenOf(self, 'strike.Collider:remove')
   local n = #shapes
   local idx = { index, ... }
   local count = select('#', ...) + 1
@@ -187,7 +239,7 @@ function Collider:remove(index, ...)
     local c = shapes[i]
     shapes[i] = nil
     if seen[i] then
-      c.parent = nil
+      c._parent = nil
     else
       j = j + 1
       shapes[j] = c
@@ -200,19 +252,22 @@ end
 --- The direct children (shapes and colliders), not copies.
 ---@return strike.Shape|strike.Collider ...
 function Collider:unpack()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:unpack') end
-  local shapes = self.shapes or {}
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:unpack') end
+  local shapes = childrenOf(self, 'strike.Collider:unpack')
   return unpack(shapes, 1, #shapes)
 end
 
--- Level 1: the flat list of leaves (`_leaves`, `_leafPos`, `_nleaves`), bottom-up.
+-- Level 1: the flat list of leaves (`_leaves`, `_leafPos`, `_nleaves`, `_single`) of this
+-- collider: a walk over everything it holds, depth first in order, with a stack of the lists
+-- it is inside and the index to go on from in each. Nested colliders' own lists are left as
+-- they are (see the cache protocol).
 local function refreshLeaves(self)
-  local shapes = self.shapes or {}
+  local shapes = childrenOf(self, 'strike')
   local leaves, pos = self._leaves, self._leafPos
   if pos then for k in pairs(pos) do pos[k] = nil end end -- (pos: made by elems, when first used)
   local nested = false
   for i = 1, #shapes do
-    if shapes[i].shapes then nested = true break end
+    if shapes[i]._shapes then nested = true break end
   end
   if not nested then -- (the children are the leaves: the list is `shapes` itself, no copy)
     local nl = #shapes
@@ -221,24 +276,32 @@ local function refreshLeaves(self)
     return
   end
   if not leaves or leaves == shapes then leaves = {}; self._leaves = leaves end
-  local nl = 0
-  for i = 1, #shapes do
-    local c = shapes[i]
-    if c.shapes then
-      if c._nleaves < 0 then refreshLeaves(c) end
-      local cl = c._leaves
-      for k = 1, c._nleaves do
+  local base = top
+  local n, nl, list, i = base, 0, shapes, 1
+  while true do
+    local c = list[i]
+    if c ~= nil then
+      i = i + 1
+      if c._shapes then -- (a collider: into its list, back here after it)
+        walk[n + 1], walk[n + 2] = list, i
+        n = n + 2
+        top = n
+        list, i = childrenOf(c, 'strike'), 1
+      else
         nl = nl + 1
-        leaves[nl] = cl[k]
-        if pos then pos[cl[k]] = nl end
+        leaves[nl] = c
+        if pos then pos[c] = nl end
       end
+    elseif n > base then -- (that list is done: back to the one holding it)
+      list, i = walk[n - 1], walk[n]
+      walk[n - 1], walk[n] = nil, nil
+      n = n - 2
     else
-      nl = nl + 1
-      leaves[nl] = c
-      if pos then pos[c] = nl end
+      break
     end
   end
-  for i = #leaves, nl + 1, -1 do leaves[i] = nil end
+  top = base
+  for k = #leaves, nl + 1, -1 do leaves[k] = nil end
   self._nleaves = nl
   self._single = nl == 1 and leaves[1]
 end
@@ -252,19 +315,56 @@ function Collider:_leafList()
   return self._leaves, self._nleaves
 end
 
--- Level 2: area and centroid, bottom-up from the children's own sums. Needs no world
--- vertices. Edges (no area) weigh by length, used when the whole tree has no area.
-local function refreshMass(self)
-  if self._nleaves < 0 then refreshLeaves(self) end
-  local shapes = self.shapes or {}
+-- The stale colliders nested in `self` (`flag`: '_massOK' or '_clean' false), each before the
+-- ones it holds: breadth first into the shared stack, from slot base + 1 (self is there
+-- first). Returns the last slot used. Their refresher then runs from the last back to the
+-- first, so that each collider is refreshed after every stale one it holds (and every fresh
+-- one holds only fresh ones: the invariant).
+local function staleBelow(self, flag, base)
+  local n = base + 1
+  walk[n] = self
+  local k = n
+  while k <= n do
+    local shapes = childrenOf(walk[k], 'strike')
+    for i = 1, #shapes do
+      local c = shapes[i]
+      if c._shapes and not c[flag] then
+        n = n + 1
+        walk[n] = c
+      end
+    end
+    k = k + 1
+    top = n
+  end
+  return n
+end
+
+-- The levels of nesting that refreshMass, refresh, shift and addAngle go down by calling
+-- themselves, the way shallow colliders are fastest; below that, a walk with the shared stack
+-- takes over (see "Depth" above), so that neither Lua's stack nor C's grows with the depth.
+local SHALLOW = 8
+
+local massWalk
+
+-- Level 2: area and centroid, and the leaf count, of a collider from its children's own
+-- sums, refreshing first the stale colliders it holds (`depth` levels down already: nil at
+-- the top). Needs no world vertices. Edges (no area) weigh by length, used when the whole
+-- tree has no area.
+local function refreshMass(self, depth)
+  local shapes = self._shapes
+  if type(shapes) ~= 'table' or shapes[0] ~= self then badShapes(self, 'strike') end
   local area, ax, ay, len, lx, ly, cnt, sx, sy = 0, 0, 0, 0, 0, 0, 0, 0, 0
   for i = 1, #shapes do
     local c = shapes[i]
-    if c.shapes then
-      if not c._massOK then refreshMass(c) end
+    if c._shapes then
+      if not c._massOK then
+        depth = depth or 0
+        if depth >= SHALLOW then return massWalk(self) end
+        refreshMass(c, depth + 1)
+      end
       area, ax, ay = area + c[CAREA], ax + c[CAX], ay + c[CAY]
       len, lx, ly = len + c[CLEN], lx + c[CLX], ly + c[CLY]
-      cnt, sx, sy = cnt + c._nleaves, sx + c[CSX], sy + c[CSY]
+      cnt, sx, sy = cnt + c[CCOUNT], sx + c[CSX], sy + c[CSY]
     else
       local a, x, y = c:getAreaCentroid()
       if a > 0 then
@@ -277,7 +377,7 @@ local function refreshMass(self)
     end
   end
   self[CAREA], self[CAX], self[CAY], self[CLEN], self[CLX], self[CLY] = area, ax, ay, len, lx, ly
-  self[CSX], self[CSY] = sx, sy -- (the count of leaves is _nleaves)
+  self[CSX], self[CSY], self[CCOUNT] = sx, sy, cnt
   if area > 0 then
     self[X], self[Y] = ax / area, ay / area
   elseif len > 0 then
@@ -290,39 +390,72 @@ local function refreshMass(self)
   self._massOK = true
 end
 
--- Level 3: bounds and radius (these need the leaves' world vertices).
+-- refreshMass of every stale collider in `self`, deepest first, `self` last: each then holds
+-- fresh ones only (refreshMass, which came here, left `self` as it was).
+function massWalk(self)
+  local base = top
+  local n = staleBelow(self, '_massOK', base)
+  for k = n, base + 1, -1 do
+    refreshMass(walk[k])
+    walk[k] = nil
+  end
+  top = base
+end
+
+local boundsWalk
+
+-- Level 3: bounds, and the leaf count, of a collider, refreshing first the stale colliders it
+-- holds (as refreshMass). These need the leaves' world vertices.
 -- (the bounds need no centroid: a body a space adds, or a bullet that only translates, never
 -- computes one until something asks)
-local function refresh(self)
-  if self._nleaves < 0 then refreshLeaves(self) end
-  local shapes = self.shapes or {}
+local function refresh(self, depth)
+  local shapes = self._shapes
+  if type(shapes) ~= 'table' or shapes[0] ~= self then badShapes(self, 'strike') end
   local minx, miny, maxx, maxy = huge, huge, -huge, -huge
+  local cnt = 0
   for i = 1, #shapes do
     local c = shapes[i]
-    local nested = c.shapes
-    if nested then
-      if not c._clean then refresh(c) end
+    local k = 1
+    if c._shapes then
+      if not c._clean then
+        depth = depth or 0
+        if depth >= SHALLOW then return boundsWalk(self) end
+        refresh(c, depth + 1)
+      end
+      k = c[CCOUNT] -- (an empty nested collider bounds nothing)
     elseif c[DIRTY] then
       c:_refresh()
     end
-    if not nested or c._nleaves > 0 then -- (an empty nested collider bounds nothing)
+    if k > 0 then
       local x0, y0, x1, y1 = c[MINX], c[MINY], c[MAXX], c[MAXY]
       if x0 < minx then minx = x0 end
       if y0 < miny then miny = y0 end
       if x1 > maxx then maxx = x1 end
       if y1 > maxy then maxy = y1 end
+      cnt = cnt + k
     end
   end
-  if self._nleaves == 0 then minx, miny, maxx, maxy = 0, 0, 0, 0 end
+  if cnt == 0 then minx, miny, maxx, maxy = 0, 0, 0, 0 end
   self[CRADIUS] = -1 -- (computed by the first getRadius: a space needs the bounds alone)
   self[MINX], self[MINY], self[MAXX], self[MAXY] = minx, miny, maxx, maxy
+  self[CCOUNT] = cnt
   self._clean = true
 end
-Collider._refresh = refresh
 
+-- refresh of every stale collider in `self`, deepest first, `self` last (as massWalk).
+function boundsWalk(self)
+  local base = top
+  local n = staleBelow(self, '_clean', base)
+  for k = n, base + 1, -1 do
+    refresh(walk[k])
+    walk[k] = nil
+  end
+  top = base
+end
 -- The radius about the centroid, of a clean collider (see getRadius).
 local function radius(self)
   if not self._massOK then refreshMass(self) end
+  if self._nleaves < 0 then refreshLeaves(self) end
   local cx, cy, leaves, r = self[X], self[Y], self._leaves, 0
   for i = 1, self._nleaves do
     local d = leaves[i]:_farthest(cx, cy)
@@ -335,7 +468,7 @@ end
 --- Recompute area and centroid now (they are also kept up to date automatically).
 ---@return self
 function Collider:calcAreaCentroid()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:calcAreaCentroid') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:calcAreaCentroid') end
   self._massOK, self._clean = false, false
   refreshMass(self)
   refresh(self)
@@ -345,14 +478,14 @@ end
 --- Recompute the radius now (it is also kept up to date automatically).
 ---@return self
 function Collider:calcRadius()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:calcRadius') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:calcRadius') end
   return self:calcAreaCentroid()
 end
 
 --- Total area of the leaf shapes (overlapping members count twice; edges add nothing).
 ---@return number
 function Collider:getArea()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getArea') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:getArea') end
   if not self._massOK then refreshMass(self) end
   return self[CAREA]
 end
@@ -362,7 +495,7 @@ end
 --- when empty.
 ---@return number x, number y
 function Collider:getCentroid()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getCentroid') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:getCentroid') end
   if not self._massOK then refreshMass(self) end
   return self[X], self[Y]
 end
@@ -370,7 +503,7 @@ end
 --- Area and centroid together.
 ---@return number area, number x, number y
 function Collider:getAreaCentroid()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getAreaCentroid') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:getAreaCentroid') end
   if not self._massOK then refreshMass(self) end
   return self:getArea(), self[X], self[Y]
 end
@@ -378,7 +511,7 @@ end
 --- Radius of the smallest circle about the centroid that holds every leaf.
 ---@return number
 function Collider:getRadius()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getRadius') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:getRadius') end
   if not self._clean then refresh(self) end
   local r = self[CRADIUS]
   if r < 0 then r = radius(self) end -- (a translation keeps it: see shift)
@@ -388,7 +521,7 @@ end
 --- Bounds of all leaves as minimum x, minimum y, width, height; (0, 0, 0, 0) when empty.
 ---@return number x, number y, number w, number h
 function Collider:getBbox()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getBbox') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:getBbox') end
   if not self._clean then refresh(self) end
   return self[MINX], self[MINY], self[MAXX] - self[MINX], self[MAXY] - self[MINY]
 end
@@ -396,7 +529,7 @@ end
 --- Bounds of all leaves as minimum x, minimum y, maximum x, maximum y.
 ---@return number minx, number miny, number maxx, number maxy
 function Collider:getBounds()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getBounds') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:getBounds') end
   if not self._clean then refresh(self) end
   return self[MINX], self[MINY], self[MAXX], self[MAXY]
 end
@@ -405,14 +538,14 @@ end
 --- constructor, for single-shape colliders and Capsules).
 ---@return number
 function Collider:getAngle()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getAngle') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:getAngle') end
   return self[CANGLE] or 0
 end
 
 --- Number of leaf shapes in the whole tree.
 ---@return integer
 function Collider:getShapeCount()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getShapeCount') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:getShapeCount') end
   if self._nleaves < 0 then refreshLeaves(self) end
   return self._nleaves
 end
@@ -420,8 +553,15 @@ end
 --- The outermost collider holding this one (itself when it has no parent).
 ---@return strike.Collider
 function Collider:getRoot()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:getRoot') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:getRoot') end
   return Shape._rootOf(self)
+end
+
+--- The collider holding this one directly, or nil (the original Strike's `collider.parent`).
+---@return strike.Collider|nil
+function Collider:getParent()
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:getParent') end
+  return self._parent
 end
 
 -- Stateless leaf iterator: the control variable is the previous leaf.
@@ -442,7 +582,7 @@ end
 --- table of positions it keeps). A loop that removes the leaf it is at ends there.
 ---@return function, strike.Collider, nil
 function Collider:elems()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:elems') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:elems') end
   if self._nleaves < 0 then refreshLeaves(self) end
   if not self._leafPos then -- (the leaves' positions, kept up to date by refreshLeaves from now on)
     local pos, leaves = {}, self._leaves
@@ -456,18 +596,20 @@ end
 --- `for parent, shape, index in collider:ipairs() do`. Makes one closure per call.
 ---@return function
 function Collider:ipairs()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:ipairs') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:ipairs') end
   if self._nleaves < 0 then refreshLeaves(self) end
   local leaves, i = self._leaves, 0
   return function()
     i = i + 1
     local s = leaves[i]
     if not s then return nil end
-    local p = s.parent
-    local shapes = p.shapes
+    local p = s._parent
+    local shapes = p and p._shapes
+    if not shapes or shapes[0] ~= p then badShapes(self, 'strike.Collider:ipairs') end
     for k = 1, #shapes do
       if shapes[k] == s then return p, s, k end
     end
+    badShapes(self, 'strike.Collider:ipairs')
   end
 end
 
@@ -476,7 +618,7 @@ end
 ---@param ny number
 ---@return number min, number max
 function Collider:project(nx, ny)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:project') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:project') end
   number(nx, 'strike.Collider:project', 'nx')
   number(ny, 'strike.Collider:project', 'ny')
   if self._nleaves < 0 then refreshLeaves(self) end
@@ -498,7 +640,7 @@ end
 ---@param y number|nil
 ---@return boolean
 function Collider:containsPoint(x, y)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:containsPoint') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:containsPoint') end
   x, y = Shape._point(x, y, 'strike.Collider:containsPoint')
   if self._nleaves < 0 then refreshLeaves(self) end
   local leaves, n = self._leaves, self._nleaves
@@ -549,11 +691,47 @@ local function eachLeaf(self, fname, pose, a, b, c, turn)
   end
 end
 
-local function addAngle(self, a)
+-- Call fn(c, x, y, z) on every collider held by `self` at any depth, `self` not included,
+-- in no particular order, and go below only where `into(c)` (a walk with the shared stack: see
+-- "Depth" above; fn must not change the tree).
+local function eachBelow(self, into, fn, x, y, z, w)
+  local base = top
+  local n, c = base, self
+  while true do
+    local shapes = childrenOf(c, 'strike')
+    for i = 1, #shapes do
+      local child = shapes[i]
+      if child._shapes and into(child) then
+        fn(child, x, y, z, w)
+        n = n + 1
+        walk[n] = child
+        top = n
+      end
+    end
+    if n == base then break end
+    c = walk[n]
+    walk[n] = nil
+    n = n - 1
+  end
+  top = base
+end
+
+local function always() return true end
+
+local function turn(c, a) c[CANGLE] = (c[CANGLE] or 0) + a end
+
+-- Add `a` to the angle of this collider and of every collider it holds (`depth` levels down
+-- already: nil at the top; see SHALLOW).
+local function addAngle(self, a, depth)
   self[CANGLE] = (self[CANGLE] or 0) + a
-  local shapes = self.shapes or {}
+  if self._nleaves >= 0 and self._leaves == self._shapes then return end -- (no collider below)
+  depth = depth or 0
+  if depth >= SHALLOW then return eachBelow(self, always, turn, a) end
+  local shapes = self._shapes -- (childrenOf written out)
+  if type(shapes) ~= 'table' or shapes[0] ~= self then badShapes(self, 'strike') end
   for i = 1, #shapes do
-    if shapes[i].shapes then addAngle(shapes[i], a) end
+    local child = shapes[i]
+    if child._shapes then addAngle(child, a, depth + 1) end
   end
 end
 
@@ -567,7 +745,7 @@ end
 -- area, else the length's when there are edges, else the leaves' centroids'. The others are
 -- read by nothing until the next refreshMass recomputes them all: an enclosing collider that
 -- holds c has area (or length) whenever c has, and uses its own first sums then too.
-local function shift(c, dx, dy, mass, bounds)
+local function shiftOne(c, dx, dy, mass, bounds)
   if mass then
     c[X], c[Y] = c[X] + dx, c[Y] + dy
     local area = c[CAREA]
@@ -576,7 +754,7 @@ local function shift(c, dx, dy, mass, bounds)
     elseif c[CLEN] > 0 then
       c[CLX], c[CLY] = c[CLX] + c[CLEN] * dx, c[CLY] + c[CLEN] * dy
     else
-      c[CSX], c[CSY] = c[CSX] + c._nleaves * dx, c[CSY] + c._nleaves * dy
+      c[CSX], c[CSY] = c[CSX] + c[CCOUNT] * dx, c[CSY] + c[CCOUNT] * dy
     end
     c._massOK = true
   end
@@ -584,12 +762,41 @@ local function shift(c, dx, dy, mass, bounds)
     c[MINX], c[MINY], c[MAXX], c[MAXY] = c[MINX] + dx, c[MINY] + dy, c[MAXX] + dx, c[MAXY] + dy
     c._clean = true
   end
-  local single = c._single
-  if single and single.parent == c then return end -- (one leaf, a child: no collider below)
-  local shapes = c.shapes
+end
+
+local function holdsLeaves(c) return c[CCOUNT] > 0 end
+
+-- shiftOne on c (written out: every translation of a body comes here) and on every collider
+-- it holds that holds a leaf (`depth` levels down already: nil at the top; see SHALLOW).
+local function shift(c, dx, dy, mass, bounds, depth)
+  if mass then
+    c[X], c[Y] = c[X] + dx, c[Y] + dy
+    local area = c[CAREA]
+    if area > 0 then
+      c[CAX], c[CAY] = c[CAX] + area * dx, c[CAY] + area * dy
+    elseif c[CLEN] > 0 then
+      c[CLX], c[CLY] = c[CLX] + c[CLEN] * dx, c[CLY] + c[CLEN] * dy
+    else
+      c[CSX], c[CSY] = c[CSX] + c[CCOUNT] * dx, c[CSY] + c[CCOUNT] * dy
+    end
+    c._massOK = true
+  end
+  if bounds then
+    c[MINX], c[MINY], c[MAXX], c[MAXY] = c[MINX] + dx, c[MINY] + dy, c[MAXX] + dx, c[MAXY] + dy
+    c._clean = true
+  end
+  if c._nleaves >= 0 then -- (a collider's leaf list, when current, tells when none is nested)
+    if c._leaves == c._shapes then return end -- (its children are its leaves)
+    local single = c._single
+    if single and single._parent == c then return end -- (one leaf, a child)
+  end
+  depth = depth or 0
+  if depth >= SHALLOW then return eachBelow(c, holdsLeaves, shiftOne, dx, dy, mass, bounds) end
+  local shapes = c._shapes -- (childrenOf written out)
+  if type(shapes) ~= 'table' or shapes[0] ~= c then badShapes(c, 'strike') end
   for i = 1, #shapes do
     local child = shapes[i]
-    if child.shapes and child._nleaves > 0 then shift(child, dx, dy, mass, bounds) end
+    if child._shapes and child[CCOUNT] > 0 then shift(child, dx, dy, mass, bounds, depth + 1) end
   end
 end
 
@@ -615,7 +822,7 @@ end
 ---@param dy number
 ---@return self
 function Collider:translate(dx, dy)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:translate') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:translate') end
   if type(dx) ~= 'number' or dx - dx ~= 0 then number(dx, 'strike.Collider:translate', 'dx') end
   if type(dy) ~= 'number' or dy - dy ~= 0 then number(dy, 'strike.Collider:translate', 'dy') end
   translateBy(self, dx + 0.0, dy + 0.0, 'strike.Collider:translate')
@@ -627,7 +834,7 @@ end
 ---@param y number
 ---@return self
 function Collider:translateTo(x, y)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:translateTo') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:translateTo') end
   -- (number's checks written out, as in translate: a game calls this for every body every frame)
   if type(x) ~= 'number' or x - x ~= 0 then number(x, 'strike.Collider:translateTo', 'x') end
   if type(y) ~= 'number' or y - y ~= 0 then number(y, 'strike.Collider:translateTo', 'y') end
@@ -642,7 +849,7 @@ end
 ---@param refy number|nil
 ---@return self
 function Collider:rotate(angle, refx, refy)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:rotate') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:rotate') end
   number(angle, 'strike.Collider:rotate', 'angle')
   refx, refy = optPoint(refx, refy, 'strike.Collider:rotate')
   if not refx then refx, refy = self:getCentroid() end
@@ -657,7 +864,7 @@ end
 ---@param refy number|nil
 ---@return self
 function Collider:rotateTo(angle, refx, refy)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:rotateTo') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:rotateTo') end
   number(angle, 'strike.Collider:rotateTo', 'angle')
   refx, refy = optPoint(refx, refy, 'strike.Collider:rotateTo')
   if not refx then refx, refy = self:getCentroid() end
@@ -673,12 +880,26 @@ end
 ---@param refy number|nil
 ---@return self
 function Collider:scale(sf, refx, refy)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:scale') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:scale') end
   positive(sf, 'strike.Collider:scale', 'factor')
   refx, refy = optPoint(refx, refy, 'strike.Collider:scale')
   if not refx then refx, refy = self:getCentroid() end
   eachLeaf(self, 'strike.Collider:scale', scaled, sf, refx, refy)
   return self
+end
+
+-- A copy of the collider `self` alone: its fields but for its links and caches (the slots
+-- are copied, stale), and an empty list of children.
+local function copyNode(self)
+  local c = setmetatable({}, getmetatable(self))
+  for k, v in pairs(self) do
+    if k ~= '_parent' and k ~= '_shapes' and k ~= '_leaves' and k ~= '_leafPos' and k ~= '_single' and k ~= '_space'
+      and k ~= '_sid' then
+      c[k] = v
+    end
+  end
+  c._nleaves, c._massOK, c._clean, c._single, c._shapes = -1, false, false, false, { [0] = c }
+  return c
 end
 
 --- An independent deep copy of the same class (children copied, parent links rebuilt);
@@ -690,21 +911,35 @@ end
 ---@param angle number|nil
 ---@return strike.Collider
 function Collider:copy(x, y, angle)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:copy') end
-  local c = setmetatable({}, getmetatable(self))
-  for k, v in pairs(self) do
-    if k ~= 'parent' and k ~= 'shapes' and k ~= '_leaves' and k ~= '_leafPos' and k ~= '_single' and k ~= '_space'
-      and k ~= '_sid' then
-      c[k] = v
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:copy') end
+  childrenOf(self, 'strike.Collider:copy')
+  local c = copyNode(self)
+  -- the tree below, a level at a time: a stack of (original, copy) pairs whose children are
+  -- still to copy (a nested collider of a class with a copy of its own is copied by it)
+  local base = top
+  local n, src, dst = base, self, c
+  while true do
+    local shapes, list = childrenOf(src, 'strike.Collider:copy'), dst._shapes
+    for i = 1, #shapes do
+      local child = shapes[i]
+      local copy
+      if child._shapes and child.copy == Collider.copy then
+        copy = copyNode(child)
+        walk[n + 1], walk[n + 2] = child, copy
+        n = n + 2
+        top = n
+      else
+        copy = child:copy()
+      end
+      copy._parent = dst
+      list[i] = copy
     end
+    if n == base then break end
+    src, dst = walk[n - 1], walk[n]
+    walk[n - 1], walk[n] = nil, nil
+    n = n - 2
   end
-  c._nleaves, c._massOK, c._clean, c._single, c.shapes = -1, false, false, false, {}
-  local shapes = self.shapes or {}
-  for i = 1, #shapes do
-    local child = shapes[i]:copy()
-    child.parent = c
-    c.shapes[i] = child
-  end
+  top = base
   if x ~= nil or y ~= nil then
     number(x, 'strike.Collider:copy', 'x')
     number(y, 'strike.Collider:copy', 'y')
@@ -718,20 +953,14 @@ end
 --- loaded on first use; an error when LÖVE is not there).
 ---@param mode string|nil 'line' (default) or 'fill'
 function Collider:draw(mode)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:draw') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:draw') end
   require(ROOT .. '.draw').body(self, mode)
 end
 
---- Merge adjacent convex polygons among the direct children wherever their union is
---- convex (recursing into nested colliders); the merged piece replaces the first of the
---- two in order. Circles and edges are left alone.
----@return self
-function Collider:consolidate()
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:consolidate') end
-  local shapes = self.shapes or {}
-  for i = 1, #shapes do
-    if shapes[i].shapes then shapes[i]:consolidate() end
-  end
+-- Merge adjacent convex polygons among the direct children of c wherever their union is
+-- convex (see consolidate), and mark its caches stale.
+local function mergeChildren(c)
+  local shapes = c._shapes
   local merged = true
   while merged do
     merged = false
@@ -742,8 +971,8 @@ function Collider:consolidate()
           local b = shapes[j]
           local m = b.merge and a:merge(b)
           if m then
-            a.parent, b.parent = nil, nil
-            m.parent = self
+            a._parent, b._parent = nil, nil
+            m._parent = c
             shapes[i] = m
             table.remove(shapes, j)
             merged = true
@@ -754,6 +983,38 @@ function Collider:consolidate()
       if merged then break end
     end
   end
+  c._nleaves, c._massOK, c._clean, c._single = -1, false, false, false
+end
+
+--- Merge adjacent convex polygons among the direct children wherever their union is
+--- convex, in this collider and in every collider nested in it; the merged piece replaces
+--- the first of the two in order. Circles and edges are left alone.
+---@return self
+function Collider:consolidate()
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:consolidate') end
+  childrenOf(self, 'strike.Collider:consolidate')
+  -- every collider of the tree, breadth first into the shared stack (a merge changes only
+  -- its own collider's children: the order does not matter)
+  local base = top
+  local n = base + 1
+  walk[n] = self
+  local k = n
+  while k <= n do
+    local shapes = childrenOf(walk[k], 'strike.Collider:consolidate')
+    for i = 1, #shapes do
+      if shapes[i]._shapes then
+        n = n + 1
+        walk[n] = shapes[i]
+      end
+    end
+    k = k + 1
+  end
+  top = n
+  for j = n, base + 1, -1 do
+    mergeChildren(walk[j])
+    walk[j] = nil
+  end
+  top = base
   invalidate(self)
   return self
 end
@@ -775,7 +1036,7 @@ local leavesIntersections, leavesIntersect, leavesRayCast, leavesSegmentCast = r
 ---@param dy number
 ---@return table<strike.Shape, number[]>|nil
 function Collider:rayIntersections(x, y, dx, dy)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:rayIntersections') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:rayIntersections') end
   checkRay('strike.Collider:rayIntersections', x, y, dx, dy)
   if self._nleaves < 0 then refreshLeaves(self) end
   return leavesIntersections(self._leaves, self._nleaves, x, y, dx, dy)
@@ -790,7 +1051,7 @@ end
 ---@param dy number
 ---@return boolean
 function Collider:rayIntersects(x, y, dx, dy)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:rayIntersects') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:rayIntersects') end
   checkRay('strike.Collider:rayIntersects', x, y, dx, dy)
   if self._nleaves < 0 then refreshLeaves(self) end
   return leavesIntersect(self._leaves, self._nleaves, x, y, dx, dy)
@@ -808,7 +1069,7 @@ end
 ---@param maxDistance number|nil
 ---@return number|nil distance, number x, number y, number nx, number ny, strike.Shape shape
 function Collider:rayCast(x, y, dx, dy, maxDistance)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:rayCast') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:rayCast') end
   checkRay('strike.Collider:rayCast', x, y, dx, dy)
   maxDistance = checkMax('strike.Collider:rayCast', maxDistance)
   if self._nleaves < 0 then refreshLeaves(self) end
@@ -823,7 +1084,7 @@ end
 ---@param y2 number
 ---@return number|nil distance, number x, number y, number nx, number ny, strike.Shape shape
 function Collider:segmentCast(x1, y1, x2, y2)
-  if type(self) ~= 'table' or self.shapes == nil then badCollider(self, 'strike.Collider:segmentCast') end
+  if type(self) ~= 'table' or self._shapes == nil then badCollider(self, 'strike.Collider:segmentCast') end
   checkSegment('strike.Collider:segmentCast', x1, y1, x2, y2)
   if self._nleaves < 0 then refreshLeaves(self) end
   return leavesSegmentCast(self._leaves, self._nleaves, x1, y1, x2, y2)

@@ -20,7 +20,7 @@ return function(shapes, name)
     local ShapeClass = shapes[name]
     if not ShapeClass then check.fail(('strike.trikers.%s: S.hapes.%s is no longer registered'):format(name, name)) end
     Collider.new(self, ShapeClass(...))
-    self[layout.CANGLE] = self.shapes[1][layout.ANGLE]
+    self[layout.CANGLE] = self._shapes[1][layout.ANGLE]
   end
   return Single
 end

@@ -410,11 +410,11 @@ local function sharpToi(A, B, dx, dy, tol)
   lo, hi, dead, bclass, bcorner = -huge, huge, false, 0, false
   scan(A, B)
   -- (overlapping at the start, beyond round-off: the caller's S.triking decides)
-  if not dead and lo < -tieT and hi > tieT and B.kind ~= 'chain' then kernels.overlap = true end
+  if not dead and lo < -tieT and hi > tieT and B._kind ~= 'chain' then kernels.overlap = true end
   -- luacheck: ignore 581 (NaN reads as no hit)
   if dead or bclass == 0 or not (lo < hi) or not (hi > 0) or not (lo <= 1) then return false end
   local ux, uy = bux, buy
-  if B.kind == 'chain' then -- a chain segment: its own normal, or a convex corner's cone
+  if B._kind == 'chain' then -- a chain segment: its own normal, or a convex corner's cone
     if lo < -tieT then return false end -- (partly through it already: it lets A pass)
     if bclass == 1 then
       if btag ~= P1 then return false end -- its back face
@@ -518,10 +518,10 @@ end
 -- Rounded pair (A[R] + B[R] > 0): false, or true with the hit in `kernels`.
 local function roundToi(A, B, dx, dy, tol)
   local r, rB = A[R] + B[R], B[R]
-  local chainSeg = B.kind == 'chain' and B or false
+  local chainSeg = B._kind == 'chain' and B or false
   local d, ax, ay, bx, by = coreDistance(A, B)
   if d < r - tol then -- (overlapping: the caller's S.triking decides)
-    kernels.overlap = B.kind ~= 'chain'
+    kernels.overlap = B._kind ~= 'chain'
     return false
   end
   if d <= r + tol then -- touching at the start: a hit when the move goes in
@@ -561,12 +561,12 @@ end
 ---@return boolean
 function kernels.toi(A, B, dx, dy, tol)
   kernels.overlap = false
-  local flip = A.kind == 'chain'
+  local flip = A._kind == 'chain'
   if flip then
-    if B.kind == 'chain' then return false end -- chain segments never meet
+    if B._kind == 'chain' then return false end -- chain segments never meet
     A, B, dx, dy = B, A, -dx, -dy
   end
-  if B.kind == 'chain' then -- one-sided: the other leaf's centroid must start in front
+  if B._kind == 'chain' then -- one-sided: the other leaf's centroid must start in front
     local nx, ny = B[P1 + NX], B[P1 + NY]
     if nx * (A[X] - B[P1]) + ny * (A[Y] - B[P1 + VY]) < 0 then return false end
     awayOpen = dx * nx + dy * ny > 0 -- (read at open ends only)

@@ -39,6 +39,8 @@ local FNAME = 'strike.eparation'
 function separation.eparation(a, b)
   checkBody(FNAME, a, 1)
   checkBody(FNAME, b, 2)
+  local la, na = leavesOf(a, one1, FNAME, 'argument 1') -- (first: they check the leaves' kinds)
+  local lb, nb = leavesOf(b, one2, FNAME, 'argument 2')
   local m = collide(a, b, mtv)
   if m then
     local nx, ny = m.nx, m.ny
@@ -46,8 +48,6 @@ function separation.eparation(a, b)
     local bx, by = support(m.collidedShape, -nx, -ny)
     return -m.depth, ax, ay, bx, by
   end
-  local la, na = leavesOf(a, one1)
-  local lb, nb = leavesOf(b, one2)
   local best, bax, bay, bbx, bby = huge, 0, 0, 0, 0
   for i = 1, na do
     local A = la[i]

@@ -40,6 +40,8 @@ local toi, span, coreDistance, scale, TIE = kernels.toi, kernels.span, kernels.c
   kernels.TIE
 local support, coreOverlap, APPROACH = kernels.support, kernels.coreOverlap, kernels.APPROACH
 local collide, leafList, root = compound.collide, Collider._leafList, Shape._rootOf
+local kinds = require(ROOT .. '.collide.dispatch').kind
+local badKind = require(ROOT .. '.reserved').badKind
 local finite, fail, describe = check.finite, check.fail, check.describe
 local sqrt, abs, cos, sin, huge, type = math.sqrt, math.abs, math.cos, math.sin, math.huge, type
 
@@ -55,13 +57,15 @@ local mtv = MTV()
 local one1, one2 = {}, {}
 
 -- A body's leaves (refreshed): a collider's list, or a bare shape in `one`.
-local function leavesOf(body, one)
+local function leavesOf(body, one, fname, owner)
   -- (one leaf, the common case, without a loop: a collider's `_single`, its only leaf while
   -- its list is current, else false; nil for a shape. LuaJIT traces one-trip loops badly.)
+  -- (the kernels tell chain segments by their kind: a `_kind` a game changed is an error)
   local s = body._single
   if s == nil then s = body end
   if s then
     if s[DIRTY] then s:_refresh() end
+    if not kinds[s._kind] then badKind(fname or 'strike', s, owner, body) end
     one[1] = s
     return one, 1
   end
@@ -69,13 +73,17 @@ local function leavesOf(body, one)
   for i = 1, n do
     s = list[i]
     if s[DIRTY] then s:_refresh() end
+    if not kinds[s._kind] then badKind(fname or 'strike', s, owner, body) end
   end
   return list, n
 end
---- leavesOf(body, one): a body's leaves, refreshed, and their count (a bare shape in the
---- one-slot list `one`).
+--- leavesOf(body, one [, fname, owner]): a body's leaves, refreshed, and their count (a bare
+--- shape in the one-slot list `one`); a leaf whose `_kind` the game changed is an error of
+--- `fname` about `owner` (an argument's name).
 ---@param body strike.Collider|strike.Shape
 ---@param one table
+---@param fname string|nil
+---@param owner string|nil
 ---@return table list
 ---@return integer n
 sweep.leavesOf = leavesOf
@@ -172,7 +180,7 @@ local placed = {}
 -- Put leaf `src` turned by (c, s) about (cx, cy) and moved by (tx, ty) into `dst`: the slots
 -- the kernels read.
 local function place(src, dst, cx, cy, c, s, tx, ty)
-  dst[COUNT], dst[R], dst.kind = src[COUNT], src[R], src.kind
+  dst[COUNT], dst[R], dst._kind = src[COUNT], src[R], src._kind
   local k0, k1 = span(src)
   local x0, y0, x1, y1 = huge, huge, -huge, -huge
   local px, py = src[X] - cx, src[Y] - cy
@@ -193,7 +201,7 @@ local function place(src, dst, cx, cy, c, s, tx, ty)
   end
   local r = src[R]
   dst[MINX], dst[MINY], dst[MAXX], dst[MAXY] = x0 - r, y0 - r, x1 + r, y1 + r
-  if src.kind == 'chain' then
+  if src._kind == 'chain' then
     for k = HASPREV, CHAIN_SIZE do dst[k] = src[k] end
     dst[G1X], dst[G1Y] = c * src[G1X] - s * src[G1Y], s * src[G1X] + c * src[G1Y]
     dst[G2X], dst[G2Y] = c * src[G2X] - s * src[G2Y], s * src[G2X] + c * src[G2Y]
@@ -203,11 +211,11 @@ end
 -- Is leaf A (at the start) in front of chain segment B, when B is one (and vice versa)?
 local P1 = layout.base(1)
 local function faces(A, B)
-  if A.kind == 'chain' then
-    if B.kind == 'chain' then return false end
+  if A._kind == 'chain' then
+    if B._kind == 'chain' then return false end
     A, B = B, A
   end
-  if B.kind ~= 'chain' then return true end
+  if B._kind ~= 'chain' then return true end
   return B[P1 + NX] * (A[X] - B[P1]) + B[P1 + NY] * (A[Y] - B[P1 + VY]) >= 0
 end
 
@@ -303,7 +311,7 @@ local FNAME = 'strike.weep'
 ---@param v any
 ---@param i integer
 function sweep.checkBody(fname, v, i)
-  if type(v) ~= 'table' or not (v.type == 'shape' and args.isShape(v) or v.type == 'collider'
+  if type(v) ~= 'table' or not (v._type == 'shape' and args.isShape(v) or v._type == 'collider'
     and args.isCollider(v)) then
     args.badBody(fname, i, v)
   end
@@ -334,14 +342,14 @@ function sweep.weep(a, dx, dy, b, angle, out)
     fail(('%s: argument 6 (out) must be a plain table for the hit (a previous hit, or {}), got %s')
       :format(FNAME, check.what(out)))
   end
-  local ra = a.parent and root(a) or a
-  local rb = b.parent and root(b) or b
+  local ra = a._parent and root(a) or a
+  local rb = b._parent and root(b) or b
   if ra == rb then return false end -- (members of one collider never meet)
   out = out or {}
+  local la, na = leavesOf(a, one1, FNAME, 'argument 1') -- (first: they check the leaves' kinds)
+  local lb, nb = leavesOf(b, one2, FNAME, 'argument 4')
   local m = collide(a, b, mtv)
   if m then return sweep.overlapHit(m, out) end
-  local la, na = leavesOf(a, one1)
-  local lb, nb = leavesOf(b, one2)
   if na == 0 or nb == 0 then return false end -- (an empty collider meets nothing)
   if angle == nil or angle == 0 then
     if not sweep.translate(la, na, lb, nb, dx, dy) then return false end

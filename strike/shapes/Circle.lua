@@ -125,7 +125,7 @@ end
 function Circle:getVertices(out)
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getVertices') end
   out = out or {}
-  if type(out) ~= 'table' or out.type ~= nil then check.badOut('strike.Shape:getVertices', out) end
+  if type(out) ~= 'table' or out._type ~= nil then check.badOut('strike.Shape:getVertices', out) end
   for i = #out, 1, -1 do out[i] = nil end
   return out, 0
 end
@@ -156,7 +156,7 @@ local function axisToward(self, other)
       local d = dx * dx + dy * dy
       if d < best then best, tx, ty = d, x, y end
     end
-  elseif other and other.type == 'shape' then
+  elseif other and other._type == 'shape' then
     tx, ty = other:getCentroid()
   end
   if not tx then return 0, -1 end
@@ -167,7 +167,8 @@ end
 
 -- The `other` of ipairs and vecs: nil or a shape.
 local function checkOther(other, fname)
-  if other ~= nil and (type(other) ~= 'table' or other.type ~= 'shape' or other._pose == nil) then
+  if other ~= nil and (type(other) ~= 'table' or other._type ~= 'shape' or other._pose == nil) then
+    require(ROOT .. '.reserved').check(fname, 'other', other)
     check.fail(('%s: other must be a strike shape or nil, got %s'):format(fname, check.what(other)))
   end
 end

@@ -42,7 +42,7 @@ end
 ---@param ... number|number[]
 function ConvexPolygon:new(...)
   if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.ConvexPolygon:new') end
-  local fname = self._fname or 'strike.' .. (self.name or 'ConvexPolygon') -- (_fname: see Concave.lua)
+  local fname = self._fname or 'strike.' .. (getmetatable(self).name or 'ConvexPolygon') -- (_fname: see Concave.lua)
   local xs, ys, n = check.coordinates(fname, ...)
   local first = ...
   local rounding = type(first) == 'table' and first.radius or nil
@@ -168,8 +168,8 @@ end
 ---@return strike.ConvexPolygon|false
 function ConvexPolygon:merge(other)
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.ConvexPolygon:merge') end
-  if type(other) ~= 'table' or other.kind ~= 'polygon' or not other[COUNT] or other[COUNT] < 3 then return false end
-  if self.kind ~= 'polygon' then return false end -- (a rounded polygon's union is never a polygon)
+  if type(other) ~= 'table' or other._kind ~= 'polygon' or not other[COUNT] or other[COUNT] < 3 then return false end
+  if self._kind ~= 'polygon' then return false end -- (a rounded polygon's union is never a polygon)
   if self[DIRTY] then self:_refresh() end
   if other[DIRTY] then other:_refresh() end
   local tol = 1e-9 * max(self:getRadius(), other:getRadius())

@@ -38,7 +38,7 @@ function Ellipse:new(x, y, a, b, n, angle)
     local t = 2 * pi * (k - 1) / n
     pts[2 * k - 1], pts[2 * k] = x + a * cos(t), y + b * sin(t)
   end
-  self.a, self.b, self.n = a, b, n
+  self._a, self._b, self._n = a, b, n
   Ellipse.super.new(self, pts)
   self:_placeCentroid(x, y) -- the exact centre
   if angle ~= 0 then self:rotate(angle) end
@@ -50,7 +50,7 @@ function Ellipse:unpack()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:unpack') end
   local s = self[SCALE]
   local cx, cy = self:getCentroid()
-  return cx, cy, self.a * s, self.b * s, self.n, self[ANGLE]
+  return cx, cy, self._a * s, self._b * s, self._n, self[ANGLE]
 end
 
 return Ellipse

@@ -41,7 +41,7 @@ function Rectangle:new(x, y, dx, dy, angle, radius)
       .. ' larger'):format(check.describe(dx), check.describe(dy), check.describe(x), check.describe(y),
       ('%.2g'):format(math.max(math.abs(x), math.abs(y)) * 2 ^ -52)))
   end
-  self.dx, self.dy = dx, dy
+  self._w, self._h = dx, dy
   if radius ~= nil then
     ConvexPolygon._checkRounding('strike.Rectangle', radius)
     if not (radius < hx and radius < hy) then
@@ -70,8 +70,8 @@ function Rectangle:unpack()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:unpack') end
   local s = self[SCALE]
   local x, y = self:getCentroid()
-  if self[ROUND] > 0 then return x, y, self.dx * s, self.dy * s, self[ANGLE], self[ROUND] * s end
-  return x, y, self.dx * s, self.dy * s, self[ANGLE]
+  if self[ROUND] > 0 then return x, y, self._w * s, self._h * s, self[ANGLE], self[ROUND] * s end
+  return x, y, self._w * s, self._h * s, self[ANGLE]
 end
 
 return Rectangle

@@ -35,7 +35,7 @@ function RegularPolygon:new(x, y, n, radius, angle)
   check.integer(n, 'strike.RegularPolygon', 'side count', 3, 4096)
   check.positive(radius, 'strike.RegularPolygon', 'radius')
   angle = check.optNumber(angle, 'strike.RegularPolygon', 'angle', 0)
-  self.n, self.radius = n, radius
+  self._n, self._radius = n, radius
   -- (edges 2 radius sin(pi / n) long, at least 0.098 radius for n <= 64)
   if ConvexPolygon._safeConvex(x, y, n, 0.098 * radius, radius) then
     -- (in positive winding from vertex 1: the hull would return them as they are)
@@ -61,7 +61,7 @@ end
 function RegularPolygon:unpack()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:unpack') end
   local cx, cy = self:getCentroid()
-  return cx, cy, self.n, self.radius * self[SCALE], self[ANGLE]
+  return cx, cy, self._n, self._radius * self[SCALE], self[ANGLE]
 end
 
 return RegularPolygon

@@ -28,6 +28,8 @@ local layout = require(ROOT .. '.base.layout')
 local Rectangle = require(ROOT .. '.shapes.Rectangle')
 local ray = require(ROOT .. '.collide.ray')
 local Collider = require(ROOT .. '.colliders.Collider')
+local reserved = require(ROOT .. '.reserved')
+local spaces = require(ROOT .. '.base.Shape')._spaces
 
 local collide = compound.collide
 local fail, describe, what, badSelf = check.fail, check.describe, check.what, check.badSelf
@@ -44,6 +46,7 @@ local K = 67108864
 ---@class strike.Space : strike.Object
 local Space = Object:extend()
 Space.type = 'space'
+Space._type = 'space' -- (the class marker strike reads: strike/reserved.lua)
 Space.name = 'Space'
 
 --- S.ite, set by strike/init.lua (the contacts of a record).
@@ -175,28 +178,57 @@ end
 local function isSpace(v) return type(v) == 'table' and v._tree ~= nil and getmetatable(v) ~= nil end
 
 local function checkOut(fname, out, i)
-  if out ~= nil and (type(out) ~= 'table' or out.type ~= nil) then
+  if out ~= nil and (type(out) ~= 'table' or out._type ~= nil) then
     fail(('%s: argument %d (out) must be a table for the results (a previous result, or {}), got %s')
       :format(fname, i, what(out)))
   end
 end
 
 local function isBody(v)
-  return type(v) == 'table' and getmetatable(v) ~= nil and (v.type == 'shape' and args.isShape(v)
-    or v.type == 'collider' and args.isCollider(v))
+  return type(v) == 'table' and getmetatable(v) ~= nil and (v._type == 'shape' and args.isShape(v)
+    or v._type == 'collider' and args.isCollider(v))
 end
 
 local function checkBody(fname, v, i)
   if not isBody(v) then args.badBody(fname, i, v) end
 end
 
+-- The failure path of idOf, ownId and _moved: `body` (`owner` in the message) is not where
+-- its `_space` and `_sid` say. When the space holds it after all, the game changed one of
+-- them; when they name no space, or a body of theirs was changed, that is the error
+-- (strike/reserved.lua); else it is not in this space.
+local function notHere(self, fname, body, owner)
+  for _, b in pairs(self._body) do
+    if b == body then
+      local s = rawget(body, '_space')
+      if s ~= self then reserved.fail(fname, owner, body, body, '_space', s) end
+      reserved.fail(fname, owner, body, body, '_sid', rawget(body, '_sid'))
+    end
+  end
+  reserved.check(fname, owner, body)
+  fail(('%s: %s (%s) is not in this space'):format(fname, owner, what(body)))
+end
+
 -- The proxy id of a body in this space, or an error.
 local function idOf(self, fname, body)
   checkBody(fname, body, 1)
-  if rawget(body, '_space') ~= self then
-    fail(('%s: argument 1 (a %s) is not in this space'):format(fname, body.type))
+  local id = body._sid
+  if rawget(body, '_space') ~= self or self._body[id] ~= body then notHere(self, fname, body, 'argument 1') end
+  return id
+end
+
+-- The proxy id of a body (argument 1 of `fname`) when it is in this space, else false; a
+-- `_space` or `_sid` that is not as this space left them is an error naming it.
+local function ownId(self, fname, body)
+  local s = rawget(body, '_space')
+  if s == self then
+    local id = body._sid
+    if self._body[id] ~= body then notHere(self, fname, body, 'argument 1') end
+    return id
   end
-  return body._sid
+  local id = rawget(body, '_sid')
+  if (s and not spaces[s]) or (id ~= nil and self._body[id] == body) then notHere(self, fname, body, 'argument 1') end
+  return false
 end
 
 ------------------------------------------------------------------ moves
@@ -205,6 +237,7 @@ end
 ---@param body strike.Shape|strike.Collider
 function Space:_moved(body)
   local id = body._sid
+  if self._body[id] ~= body then notHere(self, 'strike', body, 'a body') end -- (a `_sid` the game changed)
   local queued = self._queued
   if not queued[id] then
     queued[id] = true
@@ -303,11 +336,16 @@ end
 function Space:add(body, opts)
   if not isSpace(self) then badSelf(self, 'strike.Space:add') end
   checkBody('strike.Space:add', body, 1)
-  if body.parent then
-    fail(('strike.Space:add: argument 1 (a %s) is held by a collider; add the outermost collider instead')
-      :format(body.type))
-  end
   local other = rawget(body, '_space')
+  if body._parent or other or rawget(body, '_sid') ~= nil then
+    -- (a `_parent`, `_space` or `_sid` the game set is an error naming it)
+    if other == self then ownId(self, 'strike.Space:add', body) end
+    reserved.check('strike.Space:add', 'argument 1', body)
+  end
+  if body._parent then
+    fail(('strike.Space:add: argument 1 (%s) is held by a collider; add the outermost collider instead')
+      :format(what(body)))
+  end
   if other == self then fail('strike.Space:add: argument 1 is already in this space') end
   if other then fail('strike.Space:add: argument 1 is in another space; remove it from that one first') end
   local layer, mask, group, sensor = options('strike.Space:add', opts)
@@ -321,6 +359,7 @@ function Space:add(body, opts)
   self._group[id], self._sensor[id] = group or 0, sensor or false
   self._queued[id] = false
   body._space, body._sid = self, id
+  spaces[self] = Space._moved -- (the spaces bodies are in: see Shape:_touch)
   self._n = self._n + 1
   return body
 end
@@ -383,7 +422,11 @@ end
 ---@return boolean
 function Space:has(body)
   if not isSpace(self) then badSelf(self, 'strike.Space:has') end
-  return type(body) == 'table' and rawget(body, '_space') == self
+  if type(body) ~= 'table' then return false end
+  local here = rawget(body, '_space') == self and self._body[body._sid] == body
+  -- (a body whose `_space` or `_sid` the game changed: an error naming it)
+  if not here and reserved.classType(body) then ownId(self, 'strike.Space:has', body) end
+  return here
 end
 
 --- The number of bodies.
@@ -945,8 +988,8 @@ local function gameFilter(f) return type(f) == 'function' end
 
 local function checkOf(self, body, filterArg, out)
   flush(self)
-  local inside = rawget(body, '_space') == self
-  local self_id = inside and body._sid
+  local self_id = ownId(self, 'strike.Space:check', body)
+  local inside = self_id and true
   local k = 0
   if not (inside and self._sensor[self_id]) then
     local x0, y0, x1, y1
@@ -1360,7 +1403,7 @@ end
 --- candidates of a box, the pair rules and the argument checks.
 Space._internals = {
   enter = enter, leave = leave, flush = flush, candidates = candidates, allowed = allowed, isSpace = isSpace,
-  checkBody = checkBody, idOf = idOf, protect = protect, present = present,
+  checkBody = checkBody, idOf = idOf, ownId = ownId, protect = protect, present = present,
 }
 
 ------------------------------------------------------------------ drawing support

@@ -48,7 +48,7 @@ local private = Space._internals
 
 local enter, leave, flush, candidates = private.enter, private.leave, private.flush, private.candidates
 local allowed, isSpace, checkBody, idOf = private.allowed, private.isSpace, private.checkBody, private.idOf
-local protect, present = private.protect, private.present
+local protect, present, ownId = private.protect, private.present, private.ownId
 
 --- The gap a move leaves between a body and what stops it: SKIN times the body's radius,
 --- plus a rounding of its position (README, "Moving bodies").
@@ -130,7 +130,7 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
             end
             if sweep.overlap then
               local m = collide(b, other, mtv)
-              if m and m.collidedShape.kind ~= 'chain' and m.colliderShape.kind ~= 'chain' then
+              if m and m.collidedShape._kind ~= 'chain' and m.colliderShape._kind ~= 'chain' then
                 t = nil
                 if dx * m.nx + dy * m.ny > 0 then -- (only when the move goes further in)
                   overlapHit(m, hitScratch)
@@ -218,8 +218,7 @@ end
 
 local function castOf(self, body, dx, dy, filterArg, out, game)
   flush(self)
-  local inside = rawget(body, '_space') == self
-  local sid = inside and body._sid
+  local sid = ownId(self, 'strike.Space:cast', body) -- (false when it is not in this space)
   if sid and self._sensor[sid] then return false end
   local level = enter(self)
   level.filter, level.sid = filterArg, sid
@@ -261,8 +260,7 @@ function Space:cast(body, dx, dy, filterArg, out)
       what(out)))
   end
   out = out or {}
-  local inside = rawget(body, '_space') == self
-  local game = type(filterArg) == 'function' or inside and self._pairFilter and true or false
+  local game = type(filterArg) == 'function' or self._pairFilter and ownId(self, F, body) and true or false
   if game and not self._guard then return protect(self, castOf, body, dx, dy, filterArg, out, game) end
   return castOf(self, body, dx, dy, filterArg, out, game)
 end
