@@ -211,6 +211,8 @@ function compound.contacts(m, l1, n1, l2, n2, out)
       for j = 1, n2 do
         local b = l2[j]
         if solid(b) then
+          -- (a `_kind` a game changed: said, not read as a polygon's)
+          if not kinds[a._kind] or not kinds[b._kind] then args.noKernel('strike.ite', a, b) end
           local nx, ny, depth, face, ia, ib = feature(a, b, tx, ty, ux, uy, tol, minDepth)
           if nx then
             if depth > len then depth = len end -- (n . t, |n| = 1 to round-off)
