@@ -12,12 +12,13 @@
 ---     body passed through ('cross') or met with a game's own response is not met again in
 ---     the move; sensors are skipped (their events come from collisions()). A body
 ---     overlapping at the start counts only when the move goes further into it;
----  2. the body stops just short of the touch: a gap of SKIN (relative to its size) along
----     the normal, taken back along the leg, so that the next leg starts apart from what it
+---  2. the body stops just short of the touch: half its skin (SKIN times its size) along the
+---     normal, taken back along the leg, so that the next leg starts apart from what it
 ---     touched (a leg that slides along a surface then never meets the seams of the tiles
 ---     that make it);
 ---  3. the response (Space:addResponse) gives where the next leg starts and its goal; a
 ---     slide that turns back into the surface slid along just before (a corner) stops.
+--- Casts and moves are refused outside the range of motion (limits.lua), before anything moves.
 --- The candidates of a leg are kept for the next legs and moves while nothing else in the
 --- space moves (Space.lua's _version), in a box padded by the body's radius and the move's
 --- length; the body's own place in the broadphase waits for the next query that needs it.
@@ -32,7 +33,10 @@ local filter = require(ROOT .. '.space.filter')
 
 local collide, translate, leavesOf, better = compound.collide, sweep.translate, sweep.leavesOf, sweep.better
 local overlapHit = sweep.overlapHit
-local TIE = require(ROOT .. '.motion.kernels').TIE
+local kernels = require(ROOT .. '.motion.kernels')
+local TIE, T_ULP = kernels.TIE, kernels.T_ULP
+local limits = require(ROOT .. '.limits')
+local ROUND, checkReach, CENTROID_REACH = limits.ROUND, limits.checkReach, limits.CENTROID_REACH
 local layout = require(ROOT .. '.base.layout')
 local DIRTY, MINX, MINY, MAXX, MAXY = layout.DIRTY, layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
 local queryFilter, checkQuery = filter.query, filter.checkQuery
@@ -45,12 +49,17 @@ local private = Space._internals
 local enter, leave, flush, candidates = private.enter, private.leave, private.flush, private.candidates
 local allowed, isSpace, checkBody, idOf = private.allowed, private.isSpace, private.checkBody, private.idOf
 
---- The gap a move leaves between a body and what stops it: SKIN times the body's radius,
---- plus a rounding of its position (README, "Moving bodies").
+--- The skin: the most gap a move leaves between a body and what stops it, SKIN times the
+--- body's size (its radius; for a point, the length of its move). A stop that cannot rest
+--- exactly touching aims at half of it, so that the rounding of the coordinates keeps the gap
+--- in (0, skin] (README, "Moving bodies"; limits.lua, the range of motion).
 Space.SKIN = 1e-6
+--- The range of motion: casts and moves reach at most REACH sizes of the body from the
+--- origin (limits.lua).
+Space.REACH = limits.REACH
 
--- The gap for a body of radius `size` at (x, y).
-local function skinAt(size, x, y) return Space.SKIN * size + 1e-9 * (abs(x) + abs(y)) end
+-- The skin of a body of size `size`.
+local function skinAt(size) return Space.SKIN * size end
 
 local mtv = MTV()
 local hitScratch = {}
@@ -92,6 +101,15 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
   local la, na = leavesOf(b, one1)
   local found, bt, bcorner, badn = false, huge, false, huge
   local dl = sqrt(dx * dx + dy * dy)
+  -- (ties between bodies: within the sweeps' tolerance for the mover's neighbourhood, as
+  -- kernels.tolerance, in t; a tie keeps the earlier t: the hit chosen is met first)
+  local tieT = 0
+  if dl > 0 then
+    local m = x1 > -x0 and x1 or -x0 -- (the largest coordinate of the box swept: kernels.reach)
+    if y1 > m then m = y1 end
+    if -y0 > m then m = -y0 end
+    tieT = (TIE * ((x1 - x0) + (y1 - y0) - abs(dx) - abs(dy)) + ROUND * m) / dl + T_ULP
+  end
   for c = 1, n do
     local id = ids[c]
     local other = bodies[id]
@@ -147,12 +165,14 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
         end
         if t then
           local adn = abs(dx * nx + dy * ny)
-          -- (ties within round-off of the positions, TIE relative: see sweep.better)
-          local tieT = dl > 0 and TIE * (abs(x) + abs(y) + dl) / dl or 0
           if not found or better(t, corner, adn, bt, bcorner, badn, tieT) then
+            if found and bt < t then t = bt end
             found, bt, bcorner, badn = true, t, corner, adn
             out.t, out.x, out.y, out.nx, out.ny, out.overlapping = t, x, y, nx, ny, overlapping
             out.body, out.pick = other, p
+          elseif t < bt then
+            bt = t
+            out.t = t
           end
         end
       end
@@ -202,6 +222,15 @@ function Space:cast(body, dx, dy, filterArg, out)
   if out ~= nil and (type(out) ~= 'table' or getmetatable(out) ~= nil) then
     fail(('%s: argument 5 (out) must be a plain table for the hit (a previous hit, or {}), got %s'):format(F,
       what(out)))
+  end
+  do -- (the range of motion, limits.lua, tested inline)
+    local x, y = body:getCentroid()
+    local r = body:getRadius()
+    local lim, x1, y1 = CENTROID_REACH * r, x + dx, y + dy
+    if not (x <= lim and -x <= lim and y <= lim and -y <= lim and x1 <= lim and -x1 <= lim and y1 <= lim
+      and -y1 <= lim) then
+      checkReach(F, r, x, y, x1, y1)
+    end
   end
   out = out or {}
   flush(self)
@@ -382,7 +411,8 @@ local function solidPick(level, other, id)
   return name
 end
 
--- Cast the body by (dx, dy) against solid bodies and move it as far as it goes, SKIN short:
+-- Cast the body by (dx, dy) against solid bodies and move it as far as it goes, half its skin
+-- short (`skin`: the body's skin):
 -- the fraction moved, and whether it hit something, with the normal there. (The hit goes in
 -- the level's own table: a filter may move another body meanwhile.)
 local function advance(self, level, body, sid, dx, dy, skin)
@@ -397,7 +427,7 @@ local function advance(self, level, body, sid, dx, dy, skin)
     nx, ny = probe.nx, probe.ny
     local dn = -(dx * nx + dy * ny)
     ts = probe.t
-    if probe.overlapping then ts = 0 elseif dn > 0 then ts = ts - skin / dn end
+    if probe.overlapping then ts = 0 elseif dn > 0 then ts = ts - skin * 0.5 / dn end
     if ts < 0 then ts = 0 end
     probe.body, probe.pick = nil, nil
   end
@@ -460,6 +490,15 @@ function Space:move(body, goalX, goalY, filterFn, opts)
     fail(('%s: argument 4 (filter) must be a function (body, other) -> response name or nil, got %s'):format(F,
       what(filterFn)))
   end
+  -- (the range of motion, limits.lua, tested inline; the size the skin is relative to)
+  local x, y = body:getCentroid()
+  local size = body:getRadius()
+  local lim = CENTROID_REACH * size
+  local nlim = -lim
+  if not (x <= lim and x >= nlim and y <= lim and y >= nlim and goalX <= lim and goalX >= nlim and goalY <= lim
+    and goalY >= nlim) then
+    size = checkReach(F, size, x, y, goalX, goalY)
+  end
   -- (the options of a move run from a filter of this one are its own: the outer ones come
   -- back when it returns)
   local oUpX, oUpY, oWalkCos, oSnapH, oStepH = upX, upY, walkCos, snapH, stepH
@@ -485,7 +524,6 @@ function Space:move(body, goalX, goalY, filterFn, opts)
     local c = cols[i]
     if c.other then visited[c.other] = nil end
   end
-  local x, y = body:getCentroid()
   local k = 0
   if self._sensor[sid] then -- (a sensor meets nothing: straight to the goal)
     body:translate(goalX - x, goalY - y)
@@ -494,7 +532,7 @@ function Space:move(body, goalX, goalY, filterFn, opts)
   else
     local own = rawget(self, '_responses')
     level.filter, level.sid, level.body, level.visited = filterFn or false, sid, body, visited
-    local size = body:getRadius()
+    local skin = skinAt(size)
     local rising = (goalX - x) * upX + (goalY - y) * upY > 0
     -- The candidates are kept from leg to leg and from move to move while nothing but this
     -- body moves (Space.lua, _version), for a move at the top only (no other move under way:
@@ -514,12 +552,12 @@ function Space:move(body, goalX, goalY, filterFn, opts)
         break
       end
       local t, nx, ny = hit.t, hit.nx, hit.ny
-      -- stop short by SKIN along the normal, taken back along the leg (never before its start)
-      local skin = skinAt(size, x, y)
+      -- stop short by half the skin along the normal, taken back along the leg (never before its
+      -- start: nothing is met before t, so the body is clear of everything there)
       local dn = -(dx * nx + dy * ny)
       local ts = t
       if dn > 0 and not hit.overlapping then
-        ts = t - skin / dn
+        ts = t - skin * 0.5 / dn
         if ts < 0 then ts = 0 end
       end
       local tx, ty = x + ts * dx, y + ts * dy
@@ -549,9 +587,9 @@ function Space:move(body, goalX, goalY, filterFn, opts)
           body:translate(tx - x, ty - y)
           x, y = tx, ty
           if stepUp(self, level, body, sid, hx, hy, skin) then
-            local sx, sy = body:getCentroid()
-            fx, fy, gx, gy = sx, sy, sx, sy -- (the step used the leg's motion across up)
-            x, y = sx, sy
+            local ux, uy = body:getCentroid()
+            fx, fy, gx, gy = ux, uy, ux, uy -- (the step used the leg's motion across up)
+            x, y = ux, uy
           end
         end
       end
@@ -571,10 +609,9 @@ function Space:move(body, goalX, goalY, filterFn, opts)
       x, y, goalX, goalY = fx, fy, gx, gy
     end
     if snapH > 0 and not rising then -- snap down onto walkable ground
-      local skin = skinAt(size, x, y)
       if first(self, level, body, sid, -upX * snapH, -upY * snapH, solidPick, level, true, hit)
         and not hit.overlapping and walkable(hit.nx, hit.ny) then
-        local ts = hit.t - skin / snapH
+        local ts = hit.t - skin * 0.5 / (snapH * (upX * hit.nx + upY * hit.ny))
         if ts > 0 then
           body:translate(-upX * snapH * ts, -upY * snapH * ts)
           x, y = x - upX * snapH * ts, y - upY * snapH * ts
