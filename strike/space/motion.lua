@@ -15,7 +15,8 @@
 ---  2. the body stops just short of the touch: half its skin (SKIN times its size) along the
 ---     normal, taken back along the leg, so that the next leg starts apart from what it
 ---     touched (a leg that slides along a surface then never meets the seams of the tiles
----     that make it);
+---     that make it). A leg met only because the body is over the side of what it met by at
+---     most the skin goes on shifted across instead (an exact fit: graze);
 ---  3. the response (Space:addResponse) gives where the next leg starts and its goal; a
 ---     slide that turns back into the surface slid along just before (a corner) stops.
 --- Casts and moves are refused outside the range of motion (limits.lua), before anything moves.
@@ -71,8 +72,9 @@ local hitScratch = {}
 -- The candidates are those of the box the move sweeps (the broadphase brought up to date
 -- first). With `cache` (a move's), they are those of a larger box kept from an earlier leg or
 -- move while nothing but the body moving has moved (the body itself waits in the queue).
-local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cache, pad)
+local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cache, pad, skin)
   local x0, y0, x1, y1 = b:getBounds()
+  local ax0, ay0, ax1, ay1 = x0, y0, x1, y1
   if dx < 0 then x0 = x0 + dx else x1 = x1 + dx end
   if dy < 0 then y0 = y0 + dy else y1 = y1 + dy end
   local ids, n
@@ -100,6 +102,7 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
   end
   local la, na = leavesOf(b, one1)
   local found, bt, bcorner, badn = false, huge, false, huge
+  local ox0, oy0, ox1, oy1 = 0, 0, 0, 0 -- (the bounds of the body hit, for an exact fit)
   local dl = sqrt(dx * dx + dy * dy)
   -- (ties between bodies: within the sweeps' tolerance for the mover's neighbourhood, as
   -- kernels.tolerance, in t; a tie keeps the earlier t: the hit chosen is met first)
@@ -108,7 +111,7 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
     local m = x1 > -x0 and x1 or -x0 -- (the largest coordinate of the box swept: kernels.reach)
     if y1 > m then m = y1 end
     if -y0 > m then m = -y0 end
-    tieT = (TIE * ((x1 - x0) + (y1 - y0) - abs(dx) - abs(dy)) + ROUND * m) / dl + T_ULP
+    tieT = (TIE * ((ax1 - ax0) + (ay1 - ay0)) + ROUND * m) / dl + T_ULP
   end
   for c = 1, n do
     local id = ids[c]
@@ -170,6 +173,7 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
             found, bt, bcorner, badn = true, t, corner, adn
             out.t, out.x, out.y, out.nx, out.ny, out.overlapping = t, x, y, nx, ny, overlapping
             out.body, out.pick = other, p
+            ox0, oy0, ox1, oy1 = bx0, by0, bx1, by1
           elseif t < bt then
             bt = t
             out.t = t
@@ -177,6 +181,33 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
         end
       end
     end
+  end
+  if skin and found then
+    -- (a leg of a move: may it be an exact fit? At the stop, the overlaps across of the body
+    -- hit over the moving body's sides (l, r; u, d along y): an exact fit needs one in [0,
+    -- skin], where (2 ov - skin)^2 <= skin^2; the common case takes no branch, and LuaJIT's
+    -- traces stay whole. See graze)
+    local dn = -(dx * out.nx + dy * out.ny)
+    local ts = bt
+    if dn > 0 then ts = ts - skin * 0.5 / dn end
+    if ts < 0 then ts = 0 end
+    local mx, my = ts * dx, ts * dy
+    ax0, ay0, ax1, ay1 = ax0 + mx, ay0 + my, ax1 + mx, ay1 + my
+    local l, r, u, d = ox1 - ax0, ax1 - ox0, oy1 - ay0, ay1 - oy0
+    local ql, qr, qu, qd, s2 = l + l - skin, r + r - skin, u + u - skin, d + d - skin, skin * skin
+    if ql * ql <= s2 or qr * qr <= s2 or qu * qu <= s2 or qd * qd <= s2 then
+      local sx, sy = 0, 0
+      if l > 0 and l <= skin and ox0 < ax0 then sx = l
+      elseif r > 0 and r <= skin and ox1 > ax1 then sx = -r
+      elseif u > 0 and u <= skin and oy0 < ay0 then sy = u
+      elseif d > 0 and d <= skin and oy1 > ay1 then sy = -d end
+      if sx ~= 0 or sy ~= 0 then
+        out.fit, out.mx, out.my, out.sx, out.sy = true, mx, my, sx, sy
+        out.ox0, out.oy0, out.ox1, out.oy1 = ox0, oy0, ox1, oy1
+        return true
+      end
+    end
+    out.fit = false
   end
   return found
 end
@@ -454,6 +485,53 @@ local function stepUp(self, level, body, sid, hx, hy, skin)
   return false
 end
 
+-- An exact fit (README, "Moving bodies", exact fits). A leg that meets a body only because at
+-- its stop there the body overlaps the other's side by at most its skin (the gap a stop keeps
+-- from a wall slid along, say) goes on from that stop shifted across by the overlap, when
+-- S.triking finds the body there apart from every solid body around it (touching is not
+-- colliding): it then touches both sides, and a body slides into a gap exactly its size.
+-- `hit` is first's, which found the fit may be one (hit.fit): the stop (mx, my) along the leg,
+-- the shift (sx, sy) and the bounds of the body hit. Returns the body moved to the stop and
+-- shifted, and true; or false with the body where it was.
+local function graze(self, level, body, sid, hit)
+  local sx, sy = hit.sx, hit.sy
+  local mx, my = hit.mx + sx, hit.my + sy
+  body:translate(mx, my)
+  local x0, y0, x1, y1 = body:getBounds()
+  -- (past the other's side, not over it: the shift rounds as the body's coordinates do, and
+  -- the other need not be beside the body yet for S.triking to see it)
+  if sx > 0 and x0 < hit.ox1 or sx < 0 and x1 > hit.ox0 or sy > 0 and y0 < hit.oy1 or sy < 0 and y1 > hit.oy0 then
+    body:translate(-mx, -my)
+    return false
+  end
+  -- (there, apart from everything it would not pass through: the stop is clear of everything
+  -- as any stop is, and the shift is no longer than the skin, so nothing lies wholly beyond it)
+  flush(self)
+  local n = candidates(self, level, x0, y0, x1, y1)
+  local ids, bodies, sensor = level.ids, self._body, self._sensor
+  for c = 1, n do
+    local id = ids[c]
+    local o = bodies[id]
+    if o and id ~= sid and not sensor[id] and solidPick(level, o, id) and collide(body, o, mtv) then
+      body:translate(-mx, -my)
+      return false
+    end
+  end
+  return true
+end
+
+-- A leg of a move from (x, y) toward (goalX, goalY) whose first hit (`hit`) may be an exact
+-- fit (hit.fit): the fit when graze finds one, then the leg's first hit from there. Returns
+-- whether the leg hits, where it starts and its goal (shifted with the body).
+local function fitLeg(self, level, body, sid, hit, x, y, goalX, goalY, cache, pad, skin)
+  if not graze(self, level, body, sid, hit) then return true, x, y, goalX, goalY end
+  hit.body, hit.pick = nil, nil
+  local sx, sy = hit.sx, hit.sy
+  x, y, goalX, goalY = x + hit.mx + sx, y + hit.my + sy, goalX + sx, goalY + sy
+  return first(self, level, body, sid, goalX - x, goalY - y, movePick, level, true, hit, cache, pad, skin), x, y,
+    goalX, goalY
+end
+
 --- Move a body of this space so that its centroid goes toward (goalX, goalY), resolving what
 --- it meets on the way (see the header): returns the centroid it reached, the list of
 --- collisions in the order they happened and their count. `filter(body, other)` returns a
@@ -546,7 +624,12 @@ function Space:move(body, goalX, goalY, filterFn, opts)
     for _ = 1, 64 do
       local dx, dy = goalX - x, goalY - y
       if dx == 0 and dy == 0 then break end
-      if not first(self, level, body, sid, dx, dy, movePick, level, true, hit, cache, pad) then
+      local met = first(self, level, body, sid, dx, dy, movePick, level, true, hit, cache, pad, skin)
+      if met and hit.fit and not hit.overlapping then -- (an exact fit, maybe: see graze)
+        met, x, y, goalX, goalY = fitLeg(self, level, body, sid, hit, x, y, goalX, goalY, cache, pad, skin)
+        dx, dy = goalX - x, goalY - y
+      end
+      if not met then
         body:translate(dx, dy)
         x, y = goalX, goalY
         break
