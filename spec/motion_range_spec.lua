@@ -193,6 +193,73 @@ describe('the range of motion', function()
   end)
 end)
 
+describe('touching within round-off', function()
+  it('a body over a face by one unit in the last place does not slide past it into the body', function()
+    -- the wall x [1, 2], y [0, 1]; a box 1 x 1 above it, y [-3, -2], its right side at 1 + u
+    -- (u = 2^-52, one unit in the last place of 1): it overlaps the wall's side by u across. Moving
+    -- down by 4 it meets the wall's top after 2, t = 0.5, normal (0, -1): a tolerance let it
+    -- slide down past the wall's side (within round-off of it) and end inside the wall by u.
+    -- Level with the side (u = 0), it passes, touching. A move makes it an exact fit: over the
+    -- side by less than the skin, it goes on shifted off it by u, and passes, touching.
+    local u = 2 ^ -52
+    local wall = H.Rectangle(1.5, 0.5, 1, 1)
+    local box = H.Rectangle(0.5 + u, -2.5, 1, 1)
+    assert.equal(1 + u, select(3, box:getBounds()))
+    local h = S.weep(box, 0, 4, wall)
+    near(h.t, 0.5, 1e-15)
+    assert.equal(0, h.nx)
+    assert.equal(-1, h.ny)
+    local sp = S.pace()
+    sp:add(wall)
+    sp:add(box)
+    local x, y = sp:move(box, 0.5 + u, 1.5)
+    assert.equal(0.5, x)
+    assert.equal(1.5, y)
+    assert.equal(1, select(3, box:getBounds()))
+    assert.is_false(S.triking(box, wall))
+    -- level with it: no hit, and it ends beside it, touching
+    local level = H.Rectangle(0.5, -2.5, 1, 1)
+    assert.is_false(S.weep(level, 0, 4, wall))
+    sp = S.pace()
+    sp:add(H.Rectangle(1.5, 0.5, 1, 1))
+    sp:add(level)
+    local _, y2, _, n = sp:move(level, 0.5, 1.5)
+    assert.equal(0, n)
+    assert.equal(1.5, y2)
+    assert.is_false(S.triking(level, wall))
+  end)
+
+  it('a box resting on a tilted face and sliding along it is no hit, at 200 angles', function()
+    -- a box 4 x 4 turned as the wall 100 x 20 is, put on the wall's upper face (centroid 2 out
+    -- along its normal from the face's middle), moved 10 along the face: touching, within the
+    -- rounding of their coordinates, and moving along. The move's direction is along the face
+    -- only to its rounding, 1e-17: a tolerance on that face's h made it a hit at t = 0 (30 of
+    -- these 200), which left a body sliding along a tilted face it touches stuck there.
+    local hits, tried = 0, 0
+    for i = 1, 200 do
+      local a = 0.1 + i * 0.007
+      local wall = H.Rectangle(0, 0, 100, 20, a)
+      local f, nx, ny = 1, wall:getNormal(1)
+      for g = 2, 4 do
+        local gx, gy = wall:getNormal(g)
+        if gy < ny then f, nx, ny = g, gx, gy end
+      end
+      local ax, ay = wall:getVertex(f)
+      local bx, by = wall:getVertex(f % 4 + 1)
+      local box = H.Rectangle((ax + bx) / 2 + nx * 2, (ay + by) / 2 + ny * 2, 4, 4, a)
+      if not S.triking(box, wall) then
+        tried = tried + 1
+        if S.weep(box, -ny * 10, nx * 10, wall) then hits = hits + 1 end
+        -- (into the face by a sine of 1e-12, far beyond the rounding of a direction: a hit at 0)
+        local h = S.weep(box, -ny * 10 - nx * 1e-11, nx * 10 - ny * 1e-11, wall)
+        assert(h and h.t == 0, ('angle %.3f: moving into the face it touches is a hit at t = 0'):format(a))
+      end
+    end
+    assert(tried > 100, 'only ' .. tried .. ' boxes rest apart from their wall')
+    assert.equal(0, hits)
+  end)
+end)
+
 describe('S.weep of a tiny body against a huge one', function()
   -- Sizes are powers of two, so that every side is where it is meant to be: e = 2^-20
   -- (9.5e-7), the huge body 2^20 (1e6) and more across: 1e12 times the tiny one. The tiny
@@ -211,6 +278,12 @@ describe('S.weep of a tiny body against a huge one', function()
     assert.equal(0, h.x)
     h = S.weep(H.Circle(-e, 0, e / 2), 2 * e, 0, big)
     near(h.t, 0.25, 1e-12)
+    assert.equal(-1, h.nx)
+    assert.equal(0, h.ny)
+    -- (at y = 0.3 e, the closest point on the face, from its ends half a million away, is off
+    -- by their rounding, 6e-11, which tilted a normal taken from it by 1e-4: the face's own)
+    h = S.weep(H.Circle(-e, 0.3 * e, e / 2), 2 * e, 0, big)
+    near(h.t, 0.25, 1e-9)
     assert.equal(-1, h.nx)
     assert.equal(0, h.ny)
     -- the huge body moved against the tiny one: the same, the normal turned

@@ -24,18 +24,18 @@
 --- `direction` below when its square is not a normal double in [TINY2, huge) (one
 --- comparison more on the common path). Rays from far away: see collide/ray.lua.
 ---
---- Motion (S.weep, Space:cast, Space:move). A move stops a skin short of what it meets, a
---- millionth of the moving body's size (space/motion.lua), and that gap must outweigh the
---- rounding of every coordinate the move works with, or the body ends inside what it met
---- (at 1e11 a double is 2e-5 apart from the next). So motion has a range, relative to the
---- *size* of the body that moves (its radius; for a body of radius 0, a point, the length
---- of its move): all of it within REACH sizes of the origin, REACH = 1e7, at the start and
---- at the end of the move (its centroid within REACH - 1 along each axis). There the rounding of a
---- coordinate is at most 1e7 * 2^-53 = 1.1e-9 sizes, and the tolerance of the sweeps
---- (ROUND times the largest coordinate of that box, kernels.lua) at most 3.6e-8 sizes: the
---- skin, 1e-6, is 28 times that. The other bodies are not limited: a sweep's precision is
---- that of the moving body's neighbourhood (a tiny body against a huge one, kernels.lua).
---- checkReach raises the error for a move outside the range, at the caller's line.
+--- Motion (S.weep, Space:cast, Space:move). A move stops half a skin short of what it meets,
+--- the skin a millionth of the moving body's size (space/motion.lua), and that gap must
+--- outweigh the rounding of every coordinate the move works with, or the body ends inside what
+--- it met (at 1e11 a double is 1.5e-5 apart from the next). So motion has a range, relative to
+--- the *size* of the body that moves (its radius; for a body of radius 0, a point, the length
+--- of its move): all of it within REACH = 1e7 sizes of the origin, its centroid within
+--- REACH - 1 along each axis, at the start and at the end of the move. There the rounding of a
+--- coordinate is at most 1e7 * 2^-53 = 1.1e-9 sizes, and the tolerance of the sweeps (ROUND
+--- times the largest coordinate of the box the body sweeps, kernels.lua) at most 3.6e-8 sizes:
+--- half the skin, 5e-7, is 14 times that. The other bodies are not limited: a sweep's
+--- precision is that of the moving body's neighbourhood (a tiny body against a huge one,
+--- kernels.lua). checkReach raises the error for a move outside the range, at the caller's line.
 local limits = {}
 
 local check = require(((...):gsub('limits$', 'check')))

@@ -46,7 +46,8 @@
 --- sweeps (the rounding of the coordinates there). So a leaf a millionth across meets a face
 --- a million across at the right time, where a tolerance relative to the huge leaf's
 --- coordinates found it touching (t = 0) or missed. Ties in t are within the tolerance over
---- the move's length, plus T_ULP (the rounding of t itself).
+--- the move's length. A move within PARALLEL of a face's direction (|n . d| <= PARALLEL |d|,
+--- the rounding of a direction made parallel to a face, as a slide's is) runs along it.
 ---
 --- Corners. When two faces of M that are not parallel give the same lo (within TIE), the
 --- sharp hit met a corner of M: any normal between the two is right. The kernel then picks
@@ -86,12 +87,12 @@ assert(X + VY == Y, 'motion/kernels.lua: a centre must read as a vertex record')
 local kernels = {}
 
 --- Relative tolerance of touching and ties: TIE times the pair's smaller extent, plus the
---- rounding of the coordinates (see tolerance).
+--- rounding of the coordinates (see the header, Tolerances).
 kernels.TIE = 1e-11
-local TIE, ROUND = kernels.TIE, limits.ROUND
---- Ties in t (a fraction of the move) are also within T_ULP: the rounding of t itself.
-kernels.T_ULP = 2 ^ -50
-local T_ULP = kernels.T_ULP
+local ROUND = limits.ROUND
+--- A move with |n . d| <= PARALLEL |d| runs along the axis n (see the header).
+kernels.PARALLEL = 2 ^ -50
+local PARALLEL = kernels.PARALLEL
 --- A pair touching at the start is a hit when the move goes into it: when d . n < -APPROACH
 --- |d|, n the normal at the start (a sine: moves closer to the touching face than that
 --- slide along it).
@@ -132,7 +133,8 @@ local function minMaxProj(s, k0, k1, ux, uy)
 end
 
 --- The largest coordinate magnitude of the box that leaf A sweeps moving by (dx, dy): the
---- coordinates whose rounding the tolerance of its pairs must cover (see tolerance).
+--- coordinates whose rounding the tolerance of its pairs must cover (see the header,
+--- Tolerances: TIE times the smaller extent of the pair, plus ROUND times this).
 ---@param A table
 ---@param dx number
 ---@param dy number
@@ -144,18 +146,6 @@ function kernels.reach(A, dx, dy)
   return max(-x0, x1, -y0, y1, -x0 - dx, x1 + dx, -y0 - dy, y1 + dy)
 end
 
---- The touching tolerance of leaf A against leaf B (see the header, "Tolerances"): TIE times
---- the smaller extent of the two (width plus height of its bounds), plus ROUND times `reach`
---- (kernels.reach: A's neighbourhood).
----@param A table
----@param B table
----@param reach number
----@return number
-function kernels.tolerance(A, B, reach)
-  local ea = (A[MAXX] - A[MINX]) + (A[MAXY] - A[MINY])
-  local eb = (B[MAXX] - B[MINX]) + (B[MAXY] - B[MINY])
-  return TIE * (ea < eb and ea or eb) + ROUND * reach
-end
 
 ------------------------------------------------------------------ the axes of a pair
 
@@ -193,7 +183,7 @@ local function step(ux, uy, h, class, tag)
     local tx = h / dn
     if tx < hi then hi = tx end
   elseif h <= 0 then
-    -- Along the axis (within the rounding of the move: par): inside its slab for the whole
+    -- Along the axis (within the rounding of a direction: par): inside its slab for the whole
     -- move or never, as S.triking finds it, to the last bit. (A tolerance here would let a body
     -- level with a face within round-off slide into the body beyond it, overlapping it by as
     -- much; the skin keeps a body that stopped well clear of the faces it slides along.)
@@ -409,7 +399,7 @@ end
 local function sharpToi(A, B, dx, dy, tol)
   mode, mdx, mdy, tieH = 1, dx, dy, tol
   local dl = sqrt(dx * dx + dy * dy)
-  tieT, par = dl > 0 and tol / dl + T_ULP or 0, T_ULP * dl
+  tieT, par = dl > 0 and tol / dl or 0, PARALLEL * dl
   lo, hi, dead, bclass, bcorner = -huge, huge, false, 0, false
   scan(A, B)
   -- (overlapping at the start, beyond round-off: the caller's S.triking decides)
@@ -556,7 +546,7 @@ local function roundToi(A, B, dx, dy, tol)
   end
   rt, rcorner = huge, false
   local dl = sqrt(dx * dx + dy * dy)
-  tieT = dl > 0 and tol / dl + T_ULP or 0
+  tieT = dl > 0 and tol / dl or 0
   roundOneWay(A, B, dx, dy, r, rB, false, chainSeg)
   roundOneWay(B, A, -dx, -dy, r, rB, true, chainSeg)
   if rt == huge then return false end
@@ -568,7 +558,7 @@ end
 --- The time of impact of leaf A moving by (dx, dy) against leaf B (see the header): false,
 --- or true with the hit in kernels.t, .x, .y, .nx, .ny, .corner; kernels.overlap tells
 --- whether they overlapped at the start (chain segments aside), when the answer is S.triking's. `tol` is the
---- touching tolerance (kernels.tolerance).
+--- touching tolerance (see the header, Tolerances).
 ---@param A table
 ---@param B table
 ---@param dx number

@@ -39,7 +39,7 @@ local CHAIN_SIZE, HASPREV = layout.CHAIN_SIZE, layout.HASPREV
 local G1X, G1Y, G2X, G2Y = layout.G1X, layout.G1Y, layout.G2X, layout.G2Y
 local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
 local toi, span, coreDistance, reach = kernels.toi, kernels.span, kernels.coreDistance, kernels.reach
-local T_ULP, TIE = kernels.T_ULP, kernels.TIE
+local TIE = kernels.TIE
 local support, coreOverlap, APPROACH = kernels.support, kernels.coreOverlap, kernels.APPROACH
 local collide, leafList, root = compound.collide, Collider._leafList, Shape._rootOf
 local finite, fail, describe = check.finite, check.fail, check.describe
@@ -145,7 +145,7 @@ function sweep.translate(la, na, lb, nb, dx, dy)
       -- (bounds of the move against B's bounds first: most pairs end here)
       if A[MINX] + (dx < 0 and dx or 0) <= B[MAXX] and A[MAXX] + (dx > 0 and dx or 0) >= B[MINX]
         and A[MINY] + (dy < 0 and dy or 0) <= B[MAXY] and A[MAXY] + (dy > 0 and dy or 0) >= B[MINY] then
-        if not m then -- (kernels.tolerance, written out: A's part once)
+        if not m then -- (the touching tolerance, kernels.lua's Tolerances: A's part once)
           m = ROUND * reach(A, dx, dy)
           ea = (A[MAXX] - A[MINX]) + (A[MAXY] - A[MINY])
         end
@@ -156,13 +156,8 @@ function sweep.translate(la, na, lb, nb, dx, dy)
         if hit then
           local t, nx, ny = kernels.t, kernels.nx, kernels.ny
           local adn = abs(dx * nx + dy * ny)
-          -- (a tie keeps the earlier t: the hit chosen is the better one, at the first touch)
-          if better(t, kernels.corner, adn, ht, hcorner, hadn, dl > 0 and tol / dl + T_ULP or 0) then
-            local t0 = ht
+          if better(t, kernels.corner, adn, ht, hcorner, hadn, dl > 0 and tol / dl or 0) then
             ht, hx, hy, hnx, hny, hcorner, hadn = t, kernels.x, kernels.y, nx, ny, kernels.corner, adn
-            if t0 < t then ht = t0 end
-          elseif t < ht then
-            ht = t
           end
         end
       end

@@ -35,7 +35,7 @@ local filter = require(ROOT .. '.space.filter')
 local collide, translate, leavesOf, better = compound.collide, sweep.translate, sweep.leavesOf, sweep.better
 local overlapHit = sweep.overlapHit
 local kernels = require(ROOT .. '.motion.kernels')
-local TIE, T_ULP = kernels.TIE, kernels.T_ULP
+local TIE = kernels.TIE
 local limits = require(ROOT .. '.limits')
 local ROUND, checkReach, CENTROID_REACH = limits.ROUND, limits.checkReach, limits.CENTROID_REACH
 local layout = require(ROOT .. '.base.layout')
@@ -105,13 +105,13 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
   local ox0, oy0, ox1, oy1 = 0, 0, 0, 0 -- (the bounds of the body hit, for an exact fit)
   local dl = sqrt(dx * dx + dy * dy)
   -- (ties between bodies: within the sweeps' tolerance for the mover's neighbourhood, as
-  -- kernels.tolerance, in t; a tie keeps the earlier t: the hit chosen is met first)
+  -- kernels.lua's Tolerances, in t: far less than the skin a stop leaves, in the range of motion)
   local tieT = 0
   if dl > 0 then
     local m = x1 > -x0 and x1 or -x0 -- (the largest coordinate of the box swept: kernels.reach)
     if y1 > m then m = y1 end
     if -y0 > m then m = -y0 end
-    tieT = (TIE * ((ax1 - ax0) + (ay1 - ay0)) + ROUND * m) / dl + T_ULP
+    tieT = (TIE * ((ax1 - ax0) + (ay1 - ay0)) + ROUND * m) / dl
   end
   for c = 1, n do
     local id = ids[c]
@@ -169,14 +169,10 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
         if t then
           local adn = abs(dx * nx + dy * ny)
           if not found or better(t, corner, adn, bt, bcorner, badn, tieT) then
-            if found and bt < t then t = bt end
             found, bt, bcorner, badn = true, t, corner, adn
             out.t, out.x, out.y, out.nx, out.ny, out.overlapping = t, x, y, nx, ny, overlapping
             out.body, out.pick = other, p
             ox0, oy0, ox1, oy1 = bx0, by0, bx1, by1
-          elseif t < bt then
-            bt = t
-            out.t = t
           end
         end
       end
@@ -203,7 +199,6 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
       elseif d > 0 and d <= skin and oy1 > ay1 then sy = -d end
       if sx ~= 0 or sy ~= 0 then
         out.fit, out.mx, out.my, out.sx, out.sy = true, mx, my, sx, sy
-        out.ox0, out.oy0, out.ox1, out.oy1 = ox0, oy0, ox1, oy1
         return true
       end
     end
@@ -490,22 +485,18 @@ end
 -- from a wall slid along, say) goes on from that stop shifted across by the overlap, when
 -- S.triking finds the body there apart from every solid body around it (touching is not
 -- colliding): it then touches both sides, and a body slides into a gap exactly its size.
--- `hit` is first's, which found the fit may be one (hit.fit): the stop (mx, my) along the leg,
--- the shift (sx, sy) and the bounds of the body hit. Returns the body moved to the stop and
--- shifted, and true; or false with the body where it was.
+-- `hit` is first's, which found the fit may be one (hit.fit): the stop (mx, my) along the leg
+-- and the shift (sx, sy). Returns the body moved to the stop and shifted, and true; or false
+-- with the body where it was.
 local function graze(self, level, body, sid, hit)
   local sx, sy = hit.sx, hit.sy
   local mx, my = hit.mx + sx, hit.my + sy
   body:translate(mx, my)
   local x0, y0, x1, y1 = body:getBounds()
-  -- (past the other's side, not over it: the shift rounds as the body's coordinates do, and
-  -- the other need not be beside the body yet for S.triking to see it)
-  if sx > 0 and x0 < hit.ox1 or sx < 0 and x1 > hit.ox0 or sy > 0 and y0 < hit.oy1 or sy < 0 and y1 > hit.oy0 then
-    body:translate(-mx, -my)
-    return false
-  end
   -- (there, apart from everything it would not pass through: the stop is clear of everything
-  -- as any stop is, and the shift is no longer than the skin, so nothing lies wholly beyond it)
+  -- as any stop is, and the shift is no longer than the skin, so nothing lies wholly beyond it.
+  -- Should the shift round a unit in the last place past the other's side, the leg meets the
+  -- other again as it goes on, and stops: a face it runs along is crossed as S.triking decides)
   flush(self)
   local n = candidates(self, level, x0, y0, x1, y1)
   local ids, bodies, sensor = level.ids, self._body, self._sensor
