@@ -8,11 +8,12 @@ local alloc = require('spec.helpers.alloc')
 local PRNG = require('spec.helpers.prng')
 local raisesAt, near = expect.raisesAt, expect.near
 local H, T = S.hapes, S.trikers
-local abs, rad = math.abs, math.rad
+local rad = math.rad
 local unpack = table.unpack or unpack -- luacheck: ignore 113 143
 
--- The gap move leaves: Space.SKIN times the body's radius plus a rounding of its position.
-local function skin(body, x, y) return S.pace().SKIN * body:getRadius() + 1e-9 * (abs(x) + abs(y)) end
+-- The gap a stop leaves (README, "Moving bodies"): half the skin, Space.SKIN times the body's
+-- radius.
+local function skin(body) return S.pace().SKIN * body:getRadius() / 2 end
 
 describe('S.pace motion', function()
   setup(alloc.jitOff)
@@ -81,7 +82,7 @@ describe('S.pace motion', function()
       local box = sp:add(H.Rectangle(0, 0, 10, 10))
       local x, y, cols, n = sp:move(box, 100, 30)
       -- the leg from (0, 0) to (100, 30) touches x = 40 at t = 0.4, then slides to y = 30
-      local s = skin(box, 0, 0)
+      local s = skin(box)
       assert.equal(1, n)
       near(x, 40 - s * 100 / 100 / 1, 1e-9)
       near(y, 30, 1e-9)
@@ -105,7 +106,7 @@ describe('S.pace motion', function()
       local w1 = sp:add(H.Rectangle(50, 0, 10, 200))
       local w2 = sp:add(H.Rectangle(80, 0, 10, 200))
       local box = sp:add(H.Rectangle(0, 0, 10, 10))
-      local s = skin(box, 0, 0)
+      local s = skin(box)
       local x, y, cols, n = sp:move(box, 100, 0, function() return 'touch' end)
       near(x, 40 - s, 1e-9)
       near(y, 0)
@@ -149,7 +150,7 @@ describe('S.pace motion', function()
       near(seen[3], 0)
       near(seen[5], 100)
       near(y, -7, 1e-9)
-      near(x, 40 - skin(box, 0, 0), 1e-9)
+      near(x, 40 - skin(box), 1e-9)
       raisesAt(function() sp:addResponse(1, print) end, 'strike.Space:addResponse: argument 1 (name) must be a string')
       raisesAt(function() sp:addResponse('slide', print) end, 'strike.Space:addResponse: "slide" is a built-in')
       raisesAt(function() sp:addResponse('x', 5) end, 'strike.Space:addResponse: argument 2 must be a function')

@@ -23,9 +23,23 @@
 --- 1e-200 apart, two circles 1e308. Normals computed at run time from such a distance use
 --- `direction` below when its square is not a normal double in [TINY2, huge) (one
 --- comparison more on the common path). Rays from far away: see collide/ray.lua.
+---
+--- Motion (S.weep, Space:cast, Space:move). A move stops half a skin short of what it meets,
+--- the skin a millionth of the moving body's size (space/motion.lua), and that gap must
+--- outweigh the rounding of every coordinate the move works with, or the body ends inside what
+--- it met (at 1e11 a double is 1.5e-5 apart from the next). So motion has a range, relative to
+--- the *size* of the body that moves (its radius; for a body of radius 0, a point, the length
+--- of its move): all of it within REACH = 1e7 sizes of the origin, its centroid within
+--- REACH - 1 along each axis, at the start and at the end of the move. There the rounding of a
+--- coordinate is at most 1e7 * 2^-53 = 1.1e-9 sizes, and the tolerance of the sweeps (ROUND
+--- times the largest coordinate of the box the body sweeps, kernels.lua) at most 3.6e-8 sizes:
+--- half the skin, 5e-7, is 14 times that. The other bodies are not limited: a sweep's
+--- precision is that of the moving body's neighbourhood (a tiny body against a huge one,
+--- kernels.lua). checkReach raises the error for a move outside the range, at the caller's line.
 local limits = {}
 
-local abs, sqrt, huge = math.abs, math.sqrt, math.huge
+local check = require(((...):gsub('limits$', 'check')))
+local abs, sqrt, huge, max = math.abs, math.sqrt, math.huge, math.max
 
 --- The smallest length a shape may have (see the header): its square, 1e-200, and cube,
 --- 1e-300, are normal doubles.
@@ -85,6 +99,43 @@ function limits.direction(ax, ay, bx, by)
   if dx - dx == 0 and dy - dy == 0 then return limits.unit(dx, dy) end
   local ux, uy, l = limits.unit(bx * 0.5 - ax * 0.5, by * 0.5 - ay * 0.5) -- (halved: no overflow)
   return ux, uy, 2 * l
+end
+
+--- Motion reaches at most this many sizes of the moving body from the origin (see the
+--- header): its centroid stays within REACH - 1 sizes of the origin along each axis, at the
+--- start and at the end of the move, so that all of it stays within REACH.
+limits.REACH = 1e7
+--- REACH - 1, exactly: how many sizes the centroid may be from the origin along an axis.
+limits.CENTROID_REACH = limits.REACH - 1
+--- The rounding of a quantity computed from coordinates of magnitude m is within ROUND * m
+--- (2^-48: 32 units in the last place, a few roundings of a dot product with room to spare).
+limits.ROUND = 2 ^ -48
+
+--- The range of motion (see the header) for a body of radius `radius` whose centroid moves
+--- from (x0, y0) to (x1, y1): returns its size (the radius; for a body of radius 0 the length
+--- of the move, and a point that does not move has size 0 and is no motion), or raises the
+--- error for `fname` at the caller's line when a coordinate of the centroid, at the start or
+--- at the end, is more than CENTROID_REACH sizes from the origin. (The callers test the common
+--- case inline, the same comparisons with the radius, and call this when it fails.)
+---@param fname string
+---@param radius number
+---@param x0 number
+---@param y0 number
+---@param x1 number
+---@param y1 number
+---@return number size
+function limits.checkReach(fname, radius, x0, y0, x1, y1)
+  local size = radius > 0 and radius or limits.length(x1 - x0, y1 - y0)
+  local lim = limits.CENTROID_REACH * size
+  if x0 <= lim and -x0 <= lim and y0 <= lim and -y0 <= lim and x1 <= lim and -x1 <= lim and y1 <= lim
+    and -y1 <= lim or size == 0 then
+    return size
+  end
+  check.fail(('%s: out of the range of motion: the centroid would be %.17g from the origin along an axis, more'
+    .. ' than %.17g (limits.REACH - 1) times the size of the body that moves (%s, %.17g): the skin of a move,'
+    .. ' a millionth of that size, must outweigh the rounding of its coordinates'):format(fname,
+      max(x0, -x0, y0, -y0, x1, -x1, y1, -y1), limits.CENTROID_REACH,
+      radius > 0 and 'its radius' or 'it has no radius: the length of its move', size))
 end
 
 return limits

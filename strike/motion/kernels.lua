@@ -22,9 +22,12 @@
 ---    two- and three-dimensional clipping", Computers & Graphics 3(1), 1978, as
 ---    collide/ray.lua does): the interval [lo, hi] of t inside M. A hit needs lo < hi (an
 ---    interior to enter), hi > 0 and lo <= 1; t = max(lo, 0). The face that gave lo is the
----    hit's normal, from B toward A. An h within TIE of 0 (round-off of a touching start)
----    counts as 0, so that a pair touching at the start and moving apart, or along the
----    touching face, is no hit.
+---    hit's normal, from B toward A. An h within the touching tolerance of 0 (round-off of a
+---    touching start: see Tolerances) counts as 0, so that a pair touching at the start and
+---    moving apart is no hit, and one moving in is a hit at t = 0. A move parallel to a face
+---    (|n . d| within the rounding of d) is inside its half-plane for the whole move when
+---    h > 0, else never: with no tolerance, as S.triking decides (the same h, to the last bit),
+---    so that a body level with a face within round-off is not let into the body beyond it.
 ---  * Rounded pairs: the first contact of two convex sets at a distance R > 0 is between a
 ---    vertex of one core and an edge (or the vertex) of the other, so the answer is the
 ---    earliest of the rays from every core vertex of A (along (dx, dy)) against the capsule
@@ -32,7 +35,19 @@
 ---    against the capsules about A's edges; each capsule as its two discs and the two sides
 ---    of its rectangle (C. Ericson, Real-Time Collision Detection, 2005, 5.3.2 for the discs,
 ---    in the numerically stable form of collide/ray.lua). The normal is from the core point
----    of B to the core point of A, at distance R.
+---    of B to the core point of A, at distance R; for a hit inside an edge, the edge's own
+---    normal (the closest point on a long edge is rounded relative to its ends, which may be
+---    far). A ray tangent to a disc within the rounding of its formula is no hit: a body that
+---    fits a gap exactly passes the corner at its rim.
+---
+--- Tolerances. They are relative to the moving leaf's neighbourhood, not to the other leaf:
+--- the touching tolerance of a pair is TIE times the smaller extent of the two leaves (width
+--- plus height of its bounds) plus limits.ROUND times the largest coordinate of the box A
+--- sweeps (the rounding of the coordinates there). So a leaf a millionth across meets a face
+--- a million across at the right time, where a tolerance relative to the huge leaf's
+--- coordinates found it touching (t = 0) or missed. Ties in t are within the tolerance over
+--- the move's length. A move within PARALLEL of a face's direction (|n . d| <= PARALLEL |d|,
+--- the rounding of a direction made parallel to a face, as a slide's is) runs along it.
 ---
 --- Corners. When two faces of M that are not parallel give the same lo (within TIE), the
 --- sharp hit met a corner of M: any normal between the two is right. The kernel then picks
@@ -66,14 +81,16 @@
 --- whole cone: it knows no motion.)
 local ROOT = (...):match('^(.-)%.motion%.[^%.]+$')
 local layout = require(ROOT .. '.base.layout')
+local limits = require(ROOT .. '.limits')
 local admissible = require(ROOT .. '.collide.chain').admissible
 
 local COUNT, HALF, X, Y, R = layout.COUNT, layout.HALF, layout.X, layout.Y, layout.R
+local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
 local STRIDE, FIRST, VY, NX, NY, D = layout.STRIDE, layout.FIRST, layout.VY, layout.NX, layout.NY, layout.D
 local HASPREV, HASNEXT, CONVEX1, CONVEX2 = layout.HASPREV, layout.HASNEXT, layout.CONVEX1, layout.CONVEX2
 local G1X, G1Y, G2X, G2Y = layout.G1X, layout.G1Y, layout.G2X, layout.G2Y
 local P1 = layout.base(1)
-local sqrt, abs, huge = math.sqrt, math.abs, math.huge
+local sqrt, huge, max = math.sqrt, math.huge, math.max
 -- chain.lua's slack on the sines of its admissibility tests.
 local CHAIN_TOL = 1e-12
 
@@ -82,8 +99,13 @@ assert(X + VY == Y, 'motion/kernels.lua: a centre must read as a vertex record')
 
 local kernels = {}
 
---- Relative tolerance of touching and ties: TIE times the pair's scale (see scale).
+--- Relative tolerance of touching and ties: TIE times the pair's smaller extent, plus the
+--- rounding of the coordinates (see the header, Tolerances).
 kernels.TIE = 1e-11
+local ROUND = limits.ROUND
+--- A move with |n . d| <= PARALLEL |d| runs along the axis n (see the header).
+kernels.PARALLEL = 2 ^ -50
+local PARALLEL = kernels.PARALLEL
 --- A pair touching at the start is a hit when the move goes into it: when d . n < -APPROACH
 --- |d|, n the normal at the start (a sine: moves closer to the touching face than that
 --- slide along it).
@@ -123,27 +145,25 @@ local function minMaxProj(s, k0, k1, ux, uy)
   return lo_, hi_
 end
 
---- The size that tolerances are relative to: the largest coordinate magnitude of the two
---- leaves' bounds, and the move.
+--- The largest coordinate magnitude of the box that leaf A sweeps moving by (dx, dy): the
+--- coordinates whose rounding the tolerance of its pairs must cover (see the header,
+--- Tolerances: TIE times the smaller extent of the pair, plus ROUND times this).
 ---@param A table
----@param B table
 ---@param dx number
 ---@param dy number
 ---@return number
-function kernels.scale(A, B, dx, dy)
-  local m = abs(dx) + abs(dy)
-  for i = 1, 4 do
-    local a, b = abs(A[i]), abs(B[i])
-    if a > m then m = a end
-    if b > m then m = b end
-  end
-  return m
+function kernels.reach(A, dx, dy)
+  local x0, y0, x1, y1 = A[MINX], A[MINY], A[MAXX], A[MAXY]
+  -- (the box at the start and at the end, whose union is the box swept; no branch on the
+  -- move's direction, for LuaJIT's traces)
+  return max(-x0, x1, -y0, y1, -x0 - dx, x1 + dx, -y0 - dy, y1 + dy)
 end
+
 
 ------------------------------------------------------------------ the axes of a pair
 
 -- State of the axis scan: `mode` 1 clips the ray (toi), 2 finds the smallest h (overlap).
-local mode, mdx, mdy, tieH, tieT = 1, 0, 0, 0, 0
+local mode, mdx, mdy, tieH, tieT, par = 1, 0, 0, 0, 0, 0
 local lo, hi, dead = -huge, huge, false
 local bux, buy, bclass, btag, bdn, bcorner = 0, 0, 0, 0, 0, false
 local minH = huge
@@ -156,9 +176,9 @@ local function step(ux, uy, h, class, tag)
     if h < minH then minH, bux, buy = h, ux, uy end
     return
   end
-  if h <= tieH and h >= -tieH then h = 0 end
   local dn = mdx * ux + mdy * uy
-  if dn < 0 then
+  if dn < -par then
+    if h <= tieH and h >= -tieH then h = 0 end
     local te = h / dn
     if te > lo + tieT then
       lo, bux, buy, bclass, btag, bdn, bcorner = te, ux, uy, class, tag, dn, false
@@ -171,11 +191,16 @@ local function step(ux, uy, h, class, tag)
       if better then bux, buy, bclass, btag, bdn = ux, uy, class, tag, dn end
       if te > lo then lo = te end
     end
-  elseif dn > 0 then
+  elseif dn > par then
+    if h <= tieH and h >= -tieH then h = 0 end
     local tx = h / dn
     if tx < hi then hi = tx end
   elseif h <= 0 then
-    dead = true -- parallel, on or outside the plane: never strictly inside
+    -- Along the axis (within the rounding of a direction: par): inside its slab for the whole
+    -- move or never, as S.triking finds it, to the last bit. (A tolerance here would let a body
+    -- level with a face within round-off slide into the body beyond it, overlapping it by as
+    -- much; the skin keeps a body that stopped well clear of the faces it slides along.)
+    dead = true
   end
 end
 
@@ -406,7 +431,7 @@ end
 local function sharpToi(A, B, dx, dy, tol)
   mode, mdx, mdy, tieH = 1, dx, dy, tol
   local dl = sqrt(dx * dx + dy * dy)
-  tieT = dl > 0 and tol / dl or 0
+  tieT, par = dl > 0 and tol / dl or 0, PARALLEL * dl
   lo, hi, dead, bclass, bcorner = -huge, huge, false, 0, false
   scan(A, B)
   -- (overlapping at the start, beyond round-off: the caller's S.triking decides)
@@ -439,15 +464,19 @@ local function sharpToi(A, B, dx, dy, tol)
 end
 
 -- The entry time of the point p moving by (dx, dy) into the disc of radius r about c, from
--- outside; huge when it misses or only grazes.
+-- outside; huge when it misses or only grazes: when its line passes the circle within the
+-- rounding of this formula (disc = a (r^2 - m^2), m the line's distance from c, each term
+-- rounded relative to a r^2: a line tangent to the circle, as a body that fits a gap exactly
+-- passes a corner, is no hit).
 local function discEntry(px, py, dx, dy, cx, cy, r)
   local mx, my = px - cx, py - cy
   local b = mx * dx + my * dy
   if b >= 0 then return huge end
   local a = dx * dx + dy * dy
   local cr = mx * dy - my * dx
-  local disc = a * r * r - cr * cr
-  if not (disc > 0) then return huge end -- luacheck: ignore 581 (NaN reads as no hit)
+  local ar2 = a * r * r
+  local disc = ar2 - cr * cr
+  if not (disc > ar2 * ROUND) then return huge end -- luacheck: ignore 581 (NaN reads as no hit)
   return (mx * mx + my * my - r * r) / (-b + sqrt(disc))
 end
 
@@ -502,7 +531,18 @@ local function roundOneWay(P, Q, dx, dy, r, rB, flip, chainSeg)
           local nx, ny = hx - qx, hy - qy
           local l = sqrt(nx * nx + ny * ny)
           if l > 0 then
-            nx, ny = nx / l, ny / l
+            if u > 0 and u < 1 then
+              -- (inside the edge: its own normal, toward the point. The closest point is
+              -- rounded relative to the edge's ends, which may be far on a huge shape; the
+              -- normal of an axis-aligned edge is then exactly axis-aligned)
+              local ex, ey = bx - ax, by - ay
+              local el = sqrt(ex * ex + ey * ey)
+              local mx, my = -ey / el, ex / el
+              if mx * nx + my * ny < 0 then mx, my = -mx, -my end
+              nx, ny = mx, my
+            else
+              nx, ny = nx / l, ny / l
+            end
             if flip then nx, ny = -nx, -ny end -- (from B toward A)
             if not chainSeg or chainAllows(chainSeg, nx, ny) then
               rt, rnx, rny, rcorner = t, nx, ny, corner
@@ -551,8 +591,8 @@ end
 
 --- The time of impact of leaf A moving by (dx, dy) against leaf B (see the header): false,
 --- or true with the hit in kernels.t, .x, .y, .nx, .ny, .corner; kernels.overlap tells
---- whether they overlapped at the start (chain segments aside), when the answer is S.triking's. `tol` is the touching
---- tolerance (TIE times scale).
+--- whether they overlapped at the start (chain segments aside), when the answer is S.triking's. `tol` is the
+--- touching tolerance (see the header, Tolerances).
 ---@param A table
 ---@param B table
 ---@param dx number

@@ -30,14 +30,16 @@ local Shape = require(ROOT .. '.base.Shape')
 local MTV = require(ROOT .. '.collide.MTV')
 local args = require(ROOT .. '.collide.args')
 local check = require(ROOT .. '.check')
+local limits = require(ROOT .. '.limits')
+local checkReach, CENTROID_REACH, ROUND = limits.checkReach, limits.CENTROID_REACH, limits.ROUND
 
 local COUNT, DIRTY, X, Y, R = layout.COUNT, layout.DIRTY, layout.X, layout.Y, layout.R
 local STRIDE, VY, NX, NY, D = layout.STRIDE, layout.VY, layout.NX, layout.NY, layout.D
 local CHAIN_SIZE, HASPREV = layout.CHAIN_SIZE, layout.HASPREV
 local G1X, G1Y, G2X, G2Y = layout.G1X, layout.G1Y, layout.G2X, layout.G2Y
 local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
-local toi, span, coreDistance, scale, TIE = kernels.toi, kernels.span, kernels.coreDistance, kernels.scale,
-  kernels.TIE
+local toi, span, coreDistance, reach = kernels.toi, kernels.span, kernels.coreDistance, kernels.reach
+local TIE = kernels.TIE
 local support, coreOverlap, APPROACH = kernels.support, kernels.coreOverlap, kernels.APPROACH
 local collide, leafList, root = compound.collide, Collider._leafList, Shape._rootOf
 local kinds = require(ROOT .. '.collide.dispatch').kind
@@ -145,12 +147,18 @@ function sweep.translate(la, na, lb, nb, dx, dy)
   local dl = sqrt(dx * dx + dy * dy)
   for i = 1, na do
     local A = la[i]
+    local m, ea -- (A's part of the tolerance, when a pair needs it)
     for j = 1, nb do
       local B = lb[j]
       -- (bounds of the move against B's bounds first: most pairs end here)
       if A[MINX] + (dx < 0 and dx or 0) <= B[MAXX] and A[MAXX] + (dx > 0 and dx or 0) >= B[MINX]
         and A[MINY] + (dy < 0 and dy or 0) <= B[MAXY] and A[MAXY] + (dy > 0 and dy or 0) >= B[MINY] then
-        local tol = TIE * scale(A, B, dx, dy)
+        if not m then -- (the touching tolerance, kernels.lua's Tolerances: A's part once)
+          m = ROUND * reach(A, dx, dy)
+          ea = (A[MAXX] - A[MINX]) + (A[MAXY] - A[MINY])
+        end
+        local eb = (B[MAXX] - B[MINX]) + (B[MAXY] - B[MINY])
+        local tol = TIE * (ea < eb and ea or eb) + m
         local hit = toi(A, B, dx, dy, tol)
         if kernels.overlap then overlap = true end
         if hit then
@@ -341,6 +349,15 @@ function sweep.weep(a, dx, dy, b, angle, out)
   if out ~= nil and (type(out) ~= 'table' or getmetatable(out) ~= nil) then
     fail(('%s: argument 6 (out) must be a plain table for the hit (a previous hit, or {}), got %s')
       :format(FNAME, check.what(out)))
+  end
+  do -- (the range of motion, limits.lua, tested inline)
+    local x, y = a:getCentroid()
+    local r = a:getRadius()
+    local lim, x1, y1 = CENTROID_REACH * r, x + dx, y + dy
+    if not (x <= lim and -x <= lim and y <= lim and -y <= lim and x1 <= lim and -x1 <= lim and y1 <= lim
+      and -y1 <= lim) then
+      checkReach(FNAME, r, x, y, x1, y1)
+    end
   end
   local ra = a._parent and root(a) or a
   local rb = b._parent and root(b) or b

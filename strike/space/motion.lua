@@ -12,14 +12,16 @@
 ---     body passed through ('cross') or met with a game's own response is not met again in
 ---     the move; sensors are skipped (their events come from collisions()). A body
 ---     overlapping at the start counts only when the move goes further into it;
----  2. the body stops just short of the touch: a gap of SKIN (relative to its size) along
----     the normal, taken back along the leg, so that the next leg starts apart from what it
+---  2. the body stops just short of the touch: half its skin (SKIN times its size) along the
+---     normal, taken back along the leg, so that the next leg starts apart from what it
 ---     touched (a leg that slides along a surface then never meets the seams of the tiles
----     that make it);
+---     that make it). A leg met only because the body is over the side of what it met by at
+---     most the skin goes on shifted across instead (an exact fit: graze);
 ---  3. the response (Space:addResponse) gives where the next leg starts and its goal; a
 ---     slide that turns back into the surface slid along just before (a corner) stops. At
 ---     most MAX_LEGS legs turn the move; those that pass a body and go on unchanged
 ---     ('cross') are not counted, so a move crosses any number of bodies.
+--- Casts and moves are refused outside the range of motion (limits.lua), before anything moves.
 --- The candidates of a leg are kept for the next legs and moves while nothing else in the
 --- space moves (Space.lua's _version), in a box padded by the body's radius and the move's
 --- length; the body's own place in the broadphase waits for the next query that needs it.
@@ -34,12 +36,14 @@ local filter = require(ROOT .. '.space.filter')
 
 local collide, translate, leavesOf, better = compound.collide, sweep.translate, sweep.leavesOf, sweep.better
 local overlapHit = sweep.overlapHit
-local TIE = require(ROOT .. '.motion.kernels').TIE
+local kernels = require(ROOT .. '.motion.kernels')
+local TIE = kernels.TIE
+local limits = require(ROOT .. '.limits')
+local ROUND, checkReach, CENTROID_REACH = limits.ROUND, limits.checkReach, limits.CENTROID_REACH
 local layout = require(ROOT .. '.base.layout')
 local DIRTY, MINX, MINY, MAXX, MAXY = layout.DIRTY, layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
 local queryFilter, checkQuery = filter.query, filter.checkQuery
 local fail, describe, what, badSelf, finite = check.fail, check.describe, check.what, check.badSelf, check.finite
-local limits = require(ROOT .. '.limits')
 local unit, MAX_LENGTH = limits.unit, limits.MAX_LENGTH
 local sqrt, abs, huge, type = math.sqrt, math.abs, math.huge, type
 
@@ -50,12 +54,17 @@ local enter, leave, flush, candidates = private.enter, private.leave, private.fl
 local allowed, isSpace, checkBody, idOf = private.allowed, private.isSpace, private.checkBody, private.idOf
 local protect, present, ownId = private.protect, private.present, private.ownId
 
---- The gap a move leaves between a body and what stops it: SKIN times the body's radius,
---- plus a rounding of its position (README, "Moving bodies").
+--- The skin: the most gap a move leaves between a body and what stops it, SKIN times the
+--- body's size (its radius; for a point, the length of its move). A stop that cannot rest
+--- exactly touching aims at half of it, so that the rounding of the coordinates keeps the gap
+--- in (0, skin] (README, "Moving bodies"; limits.lua, the range of motion).
 Space.SKIN = 1e-6
+--- The range of motion: casts and moves reach at most REACH sizes of the body from the
+--- origin (limits.lua).
+Space.REACH = limits.REACH
 
--- The gap for a body of radius `size` at (x, y).
-local function skinAt(size, x, y) return Space.SKIN * size + 1e-9 * (abs(x) + abs(y)) end
+-- The skin of a body of size `size`.
+local function skinAt(size) return Space.SKIN * size end
 
 local mtv = MTV()
 local hitScratch = {}
@@ -70,8 +79,10 @@ local hitScratch = {}
 -- `game`: pick may run the game's code (a filter function, the pair filter), which may
 -- remove bodies: a body removed is not hit, nor is one removed after it was (the hits are
 -- kept in level.hits to choose again from); moving the body `b` itself is an error.
-local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cache, pad, game)
+-- `skin`: a leg of a move, whose first hit may be an exact fit (see graze).
+local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cache, pad, game, skin)
   local x0, y0, x1, y1 = b:getBounds()
+  local ax0, ay0, ax1, ay1 = x0, y0, x1, y1
   if dx < 0 then x0 = x0 + dx else x1 = x1 + dx end
   if dy < 0 then y0 = y0 + dy else y1 = y1 + dy end
   local ids, n
@@ -99,8 +110,18 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
   end
   local la, na = leavesOf(b, one1)
   local found, bt, bcorner, badn = false, huge, false, huge
+  local ox0, oy0, ox1, oy1 = 0, 0, 0, 0 -- (the bounds of the body hit, for an exact fit)
   local dl = sqrt(dx * dx + dy * dy)
   local removals, pose, hits, nh = self._removals, na > 0 and la[1]._pose, level.hits, 0
+  -- (ties between bodies: within the sweeps' tolerance for the mover's neighbourhood, as
+  -- kernels.lua's Tolerances, in t: far less than the skin a stop leaves, in the range of motion)
+  local tieT = 0
+  if dl > 0 then
+    local m = x1 > -x0 and x1 or -x0 -- (the largest coordinate of the box swept: kernels.reach)
+    if y1 > m then m = y1 end
+    if -y0 > m then m = -y0 end
+    tieT = (TIE * ((ax1 - ax0) + (ay1 - ay0)) + ROUND * m) / dl
+  end
   for c = 1, n do
     local id = ids[c]
     local other = bodies[id]
@@ -156,12 +177,11 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
         end
         if t then
           local adn = abs(dx * nx + dy * ny)
-          -- (ties within round-off of the positions, TIE relative: see sweep.better)
-          local tieT = dl > 0 and TIE * (abs(x) + abs(y) + dl) / dl or 0
           if not found or better(t, corner, adn, bt, bcorner, badn, tieT) then
             found, bt, bcorner, badn = true, t, corner, adn
             out.t, out.x, out.y, out.nx, out.ny, out.overlapping = t, x, y, nx, ny, overlapping
             out.body, out.pick = other, p
+            ox0, oy0, ox1, oy1 = bx0, by0, bx1, by1
           end
           if game then
             if not hits then
@@ -170,8 +190,7 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
             end
             hits[nh + 1], hits[nh + 2], hits[nh + 3], hits[nh + 4], hits[nh + 5] = other, t, x, y, nx
             hits[nh + 6], hits[nh + 7], hits[nh + 8], hits[nh + 9], hits[nh + 10] = ny, corner, overlapping, adn, p
-            hits[nh + 11] = tieT
-            nh = nh + 11
+            nh = nh + 10
           end
         end
       end
@@ -182,12 +201,14 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
       fail(('%s: a filter moved the body being moved (move other bodies only, or change the goal)')
         :format(away and 'strike.Space:move' or 'strike.Space:cast'))
     end
-    if found and self._removals ~= removals and not present(self, out.body) then
-      -- (a filter removed the body hit after it was found: the first of those left)
+    local rechosen = found and self._removals ~= removals and not present(self, out.body)
+    if rechosen then
+      -- (a filter removed the body hit after it was found: the first of those left; no exact
+      -- fit is looked for then)
       found = false
-      for h = 1, nh, 11 do
+      for h = 1, nh, 10 do
         local other, t, corner, adn = hits[h], hits[h + 1], hits[h + 6], hits[h + 8]
-        if present(self, other) and (not found or better(t, corner, adn, bt, bcorner, badn, hits[h + 10])) then
+        if present(self, other) and (not found or better(t, corner, adn, bt, bcorner, badn, tieT)) then
           found, bt, bcorner, badn = true, t, corner, adn
           out.t, out.x, out.y, out.nx, out.ny, out.overlapping = t, hits[h + 2], hits[h + 3], hits[h + 4],
             hits[h + 5], hits[h + 7]
@@ -196,6 +217,36 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
       end
     end
     for h = 1, nh do hits[h] = false end -- (nothing kept alive)
+    if rechosen then
+      out.fit = false
+      return found
+    end
+  end
+  if skin and found then
+    -- (a leg of a move: may it be an exact fit? At the stop, the overlaps across of the body
+    -- hit over the moving body's sides (l, r; u, d along y): an exact fit needs one in [0,
+    -- skin], where (2 ov - skin)^2 <= skin^2; the common case takes no branch, and LuaJIT's
+    -- traces stay whole. See graze)
+    local dn = -(dx * out.nx + dy * out.ny)
+    local ts = bt
+    if dn > 0 then ts = ts - skin * 0.5 / dn end
+    if ts < 0 then ts = 0 end
+    local mx, my = ts * dx, ts * dy
+    ax0, ay0, ax1, ay1 = ax0 + mx, ay0 + my, ax1 + mx, ay1 + my
+    local l, r, u, d = ox1 - ax0, ax1 - ox0, oy1 - ay0, ay1 - oy0
+    local ql, qr, qu, qd, s2 = l + l - skin, r + r - skin, u + u - skin, d + d - skin, skin * skin
+    if ql * ql <= s2 or qr * qr <= s2 or qu * qu <= s2 or qd * qd <= s2 then
+      local sx, sy = 0, 0
+      if l > 0 and l <= skin and ox0 < ax0 then sx = l
+      elseif r > 0 and r <= skin and ox1 > ax1 then sx = -r
+      elseif u > 0 and u <= skin and oy0 < ay0 then sy = u
+      elseif d > 0 and d <= skin and oy1 > ay1 then sy = -d end
+      if sx ~= 0 or sy ~= 0 then
+        out.fit, out.mx, out.my, out.sx, out.sy = true, mx, my, sx, sy
+        return true
+      end
+    end
+    out.fit = false
   end
   return found
 end
@@ -258,6 +309,15 @@ function Space:cast(body, dx, dy, filterArg, out)
   if out ~= nil and (type(out) ~= 'table' or getmetatable(out) ~= nil) then
     fail(('%s: argument 5 (out) must be a plain table for the hit (a previous hit, or {}), got %s'):format(F,
       what(out)))
+  end
+  do -- (the range of motion, limits.lua, tested inline)
+    local x, y = body:getCentroid()
+    local r = body:getRadius()
+    local lim, x1, y1 = CENTROID_REACH * r, x + dx, y + dy
+    if not (x <= lim and -x <= lim and y <= lim and -y <= lim and x1 <= lim and -x1 <= lim and y1 <= lim
+      and -y1 <= lim) then
+      checkReach(F, r, x, y, x1, y1)
+    end
   end
   out = out or {}
   local game = type(filterArg) == 'function' or self._pairFilter and ownId(self, F, body) and true or false
@@ -442,7 +502,8 @@ local function solidPick(level, other, id)
   return name
 end
 
--- Cast the body by (dx, dy) against solid bodies and move it as far as it goes, SKIN short:
+-- Cast the body by (dx, dy) against solid bodies and move it as far as it goes, half its skin
+-- short (`skin`: the body's skin):
 -- the fraction moved, and whether it hit something, with the normal there. (The hit goes in
 -- the level's own table: a filter may move another body meanwhile.)
 local function advance(self, level, body, sid, dx, dy, skin)
@@ -457,7 +518,7 @@ local function advance(self, level, body, sid, dx, dy, skin)
     nx, ny = probe.nx, probe.ny
     local dn = -(dx * nx + dy * ny)
     ts = probe.t
-    if probe.overlapping then ts = 0 elseif dn > 0 then ts = ts - skin / dn end
+    if probe.overlapping then ts = 0 elseif dn > 0 then ts = ts - skin * 0.5 / dn end
     if ts < 0 then ts = 0 end
     probe.body, probe.pick = nil, nil
   end
@@ -494,6 +555,52 @@ end
 -- then never meets again, so they end, and a move crosses any number of bodies.
 local MAX_LEGS = 64
 
+-- An exact fit (README, "Moving bodies", exact fits). A leg that meets a body only because at
+-- its stop there the body overlaps the other's side by at most its skin (the gap a stop keeps
+-- from a wall slid along, say) goes on from that stop shifted across by the overlap, when
+-- S.triking finds the body there apart from every solid body around it (touching is not
+-- colliding): it then touches both sides, and a body slides into a gap exactly its size.
+-- `hit` is first's, which found the fit may be one (hit.fit): the stop (mx, my) along the leg
+-- and the shift (sx, sy). Returns the body moved to the stop and shifted, and true; or false
+-- with the body where it was.
+local function graze(self, level, body, sid, hit)
+  local sx, sy = hit.sx, hit.sy
+  local mx, my = hit.mx + sx, hit.my + sy
+  body:translate(mx, my)
+  local x0, y0, x1, y1 = body:getBounds()
+  -- (there, apart from everything it would not pass through: the stop is clear of everything
+  -- as any stop is, and the shift is no longer than the skin, so nothing lies wholly beyond it.
+  -- Should the shift round a unit in the last place past the other's side, the leg meets the
+  -- other again as it goes on, and stops: a face it runs along is crossed as S.triking decides)
+  flush(self)
+  local n = candidates(self, level, x0, y0, x1, y1)
+  local ids, bodies, sensor = level.ids, self._body, self._sensor
+  for c = 1, n do
+    local id = ids[c]
+    local o = bodies[id]
+    -- (solidPick may run the game's filter, which may remove the body it is asked about)
+    if o and id ~= sid and not sensor[id] and solidPick(level, o, id) and bodies[id] == o and collide(body, o, mtv)
+    then
+      body:translate(-mx, -my)
+      return false
+    end
+  end
+  return true
+end
+
+-- A leg of a move from (x, y) toward (goalX, goalY) whose first hit (`hit`) may be an exact
+-- fit (hit.fit): the fit when graze finds one, then the leg's first hit from there. Returns
+-- whether the leg hits, where it starts and its goal (shifted with the body).
+local function fitLeg(self, level, body, sid, hit, x, y, goalX, goalY, cache, pad, skin)
+  if not graze(self, level, body, sid, hit) then return true, x, y, goalX, goalY end
+  hit.body, hit.pick = nil, nil
+  local sx, sy = hit.sx, hit.sy
+  x, y, goalX, goalY = x + hit.mx + sx, y + hit.my + sy, goalX + sx, goalY + sy
+  return first(self, level, body, sid, goalX - x, goalY - y, movePick, level, true, hit, cache, pad, level.game, skin),
+    x, y, goalX, goalY
+end
+
+
 -- The collision list of the level a move runs at (one for moves at the top, another for a
 -- move run from a filter of a query or of another move, and so on), with the marks of the
 -- bodies met and the hit scratch.
@@ -513,7 +620,8 @@ local function listOf(self, level)
   return cols
 end
 
-local function moveOf(self, body, sid, goalX, goalY, filterFn, upX, upY, walkCos, snapH, stepH, character, game)
+local function moveOf(self, body, sid, x, y, size, goalX, goalY, filterFn, upX, upY, walkCos, snapH, stepH, character,
+                      game)
   local F = 'strike.Space:move'
   local level = enter(self)
   level.upX, level.upY, level.walkCos, level.snapH, level.stepH = upX, upY, walkCos, snapH, stepH
@@ -524,7 +632,6 @@ local function moveOf(self, body, sid, goalX, goalY, filterFn, upX, upY, walkCos
     local c = cols[i]
     if c.other then visited[c.other] = nil end
   end
-  local x, y = body:getCentroid()
   local k = 0
   if self._sensor[sid] then -- (a sensor meets nothing: straight to the goal)
     body:translate(goalX - x, goalY - y)
@@ -533,7 +640,7 @@ local function moveOf(self, body, sid, goalX, goalY, filterFn, upX, upY, walkCos
   else
     local own = rawget(self, '_responses')
     level.filter, level.sid, level.body, level.visited, level.game = filterFn or false, sid, body, visited, game
-    local size = body:getRadius()
+    local skin = skinAt(size)
     local rising = (goalX - x) * upX + (goalY - y) * upY > 0
     -- The candidates are kept from leg to leg and from move to move while nothing but this
     -- body moves (Space.lua, _version), for a move at the top only (no other call under way:
@@ -551,20 +658,25 @@ local function moveOf(self, body, sid, goalX, goalY, filterFn, upX, upY, walkCos
     while true do
       local dx, dy = goalX - x, goalY - y
       if dx == 0 and dy == 0 then break end
-      local found = first(self, level, body, sid, dx, dy, movePick, level, true, hit, cache, pad, game)
+      local met = first(self, level, body, sid, dx, dy, movePick, level, true, hit, cache, pad, game, skin)
       if game and not present(self, body) then break end -- (a filter removed the body: the move ends)
-      if not found then
+      if met and hit.fit and not hit.overlapping then -- (an exact fit, maybe: see graze)
+        met, x, y, goalX, goalY = fitLeg(self, level, body, sid, hit, x, y, goalX, goalY, cache, pad, skin)
+        if game and not present(self, body) then break end
+        dx, dy = goalX - x, goalY - y
+      end
+      if not met then
         body:translate(dx, dy)
         x, y = goalX, goalY
         break
       end
       local t, nx, ny = hit.t, hit.nx, hit.ny
-      -- stop short by SKIN along the normal, taken back along the leg (never before its start)
-      local skin = skinAt(size, x, y)
+      -- stop short by half the skin along the normal, taken back along the leg (never before its
+      -- start: nothing is met before t, so the body is clear of everything there)
       local dn = -(dx * nx + dy * ny)
       local ts = t
       if dn > 0 and not hit.overlapping then
-        ts = t - skin / dn
+        ts = t - skin * 0.5 / dn
         if ts < 0 then ts = 0 end
       end
       local tx, ty = x + ts * dx, y + ts * dy
@@ -594,9 +706,9 @@ local function moveOf(self, body, sid, goalX, goalY, filterFn, upX, upY, walkCos
           body:translate(tx - x, ty - y)
           x, y = tx, ty
           if stepUp(self, level, body, sid, hx, hy, skin) then
-            local sx, sy = body:getCentroid()
-            fx, fy, gx, gy = sx, sy, sx, sy -- (the step used the leg's motion across up)
-            x, y = sx, sy
+            local ux, uy = body:getCentroid()
+            fx, fy, gx, gy = ux, uy, ux, uy -- (the step used the leg's motion across up)
+            x, y = ux, uy
           end
         end
       end
@@ -621,10 +733,9 @@ local function moveOf(self, body, sid, goalX, goalY, filterFn, upX, upY, walkCos
       x, y, goalX, goalY = fx, fy, gx, gy
     end
     if snapH > 0 and not rising and present(self, body) then -- snap down onto walkable ground
-      local skin = skinAt(size, x, y)
       if first(self, level, body, sid, -upX * snapH, -upY * snapH, solidPick, level, true, hit, nil, 0, game)
         and not hit.overlapping and walkable(level, hit.nx, hit.ny) then
-        local ts = hit.t - skin / snapH
+        local ts = hit.t - skin * 0.5 / (snapH * (upX * hit.nx + upY * hit.ny))
         if ts > 0 then
           body:translate(-upX * snapH * ts, -upY * snapH * ts)
           x, y = x - upX * snapH * ts, y - upY * snapH * ts
@@ -690,14 +801,24 @@ function Space:move(body, goalX, goalY, filterFn, opts)
     fail(('%s: argument 4 (filter) must be a function (body, other) -> response name or nil, got %s'):format(F,
       what(filterFn)))
   end
+  -- (the range of motion, limits.lua, tested inline; the size the skin is relative to)
+  local x, y = body:getCentroid()
+  local size = body:getRadius()
+  local lim = CENTROID_REACH * size
+  local nlim = -lim
+  if not (x <= lim and x >= nlim and y <= lim and y >= nlim and goalX <= lim and goalX >= nlim and goalY <= lim
+    and goalY >= nlim) then
+    size = checkReach(F, size, x, y, goalX, goalY)
+  end
   local upX, upY, walkCos, snapH, stepH = readOptions(F, opts)
   -- (the game's code runs in the move when it has a filter or the space a pair filter)
   local game = filterFn ~= nil or self._pairFilter and true or false
   local character = opts ~= nil -- (the walkable-ground slide: README, "Characters")
   if game and not self._guard then
-    return protect(self, moveOf, body, sid, goalX, goalY, filterFn, upX, upY, walkCos, snapH, stepH, character, game)
+    return protect(self, moveOf, body, sid, x, y, size, goalX, goalY, filterFn, upX, upY, walkCos, snapH, stepH,
+      character, game)
   end
-  return moveOf(self, body, sid, goalX, goalY, filterFn, upX, upY, walkCos, snapH, stepH, character, game)
+  return moveOf(self, body, sid, x, y, size, goalX, goalY, filterFn, upX, upY, walkCos, snapH, stepH, character, game)
 end
 
 return Space
