@@ -24,7 +24,32 @@
 --- issue's contract). Every later call is checked against the model as usual: after an
 --- error, the space must agree with the model.
 ---
---- What the README leaves open is written down where it is assumed (look for "ASSUMED").
+--- What the README leaves open, and what this model assumes there (also marked ASSUMED below):
+---  * errors raised by a game's function (a filter, a pair filter, a response, a callback):
+---    the events stay balanced as the game sees them, through the first callback of each
+---    event (a recorder that never raises): a pair gets 'begin' once before any 'stay' or
+---    'end', and 'end' once when it no longer touches (or a body went); an event a raise kept
+---    from being delivered comes at a later call, as the model of the pairs begun says;
+---  * on/off from inside a callback: a callback removed or added during a collisions() call
+---    may or may not get that call's later events (each at most once, in order); every other
+---    callback gets all of them, in registration order; a removed one gets none afterwards;
+---  * a body removed during a call never appears in its results (the issue's words; the
+---    README says "the query in progress skips them"), but for collisions(): a body removed
+---    by a callback (its events) may be in the list, which was made before the events;
+---  * a collisions() called from inside another (a pair filter, a callback): only no crash,
+---    and a consistent space at the next calls; a change to the body a query asks about,
+---    from its own filter: only no crash; the body a move is moving is never touched by its
+---    own filters and responses (the README: "not supported");
+---  * a move: the first collision is the earliest S.weep hit along the first leg among the
+---    bodies it may meet (a body overlapping at the start counts at t = 0 when the move goes
+---    further in; a chain in the overlap, or a move along it, may go either way); it ends
+---    clear of every solid body it started clear of (chains, one-sided, aside; a depth within
+---    round-off aside); it never rests exactly touching a solid body it met (but where a leg
+---    starts touching); with nothing solid on the line it ends at its goal, every body crossed
+---    reported once; with snap and a slope (the README defines walkable by the slope), a move
+---    that does not go up ends on walkable ground within snap, when there is some; and it is
+---    never stuck meeting bodies at t = 0 leg after leg without moving (the issue: a cap on a
+---    move's legs never leaves a body short of where its responses take it).
 local S = require 'strike'
 local PRNG = require('spec.helpers.prng')
 local World = require('spec.property.space_world')
@@ -1831,6 +1856,22 @@ function P:checkMove(what, plan, pre, f, ax, ay, cols, k)
   end
   self:count('move collisions', k)
   self:keep(what, cols, k, 'move')
+  -- no live-lock: a move does not go on meeting bodies at t = 0 without moving (the issue: a
+  -- cap on a move's legs never leaves a body short of where its responses take it)
+  local run, longest = 0, 0
+  for i = 1, k do
+    local c, p = cols[i], cols[i - 1]
+    if c.t == 0 and p and p.t == 0 and c.touchX == p.touchX and c.touchY == p.touchY then
+      run = run + 1
+      if run > longest then longest = run end
+    else
+      run = 0
+    end
+  end
+  if not f.any and self.F.stuck then
+    self:check(longest < 8, '%s: stuck: %d legs in a row meet a body at t = 0 and go nowhere (%d collisions); %s',
+      what, longest + 1, k, colsDesc())
+  end
   if f.pf or f.opts[M] or L == 0 then return end
   -- the model's first leg: the earliest S.weep hit among the bodies the move may meet (a
   -- body overlapping at the start counts at t = 0 when the move goes further into it; ASSUMED
@@ -2412,7 +2453,7 @@ function P:run(steps)
   if rng:next() < 0.4 then self:setPairFilter(self:newScript('pair')) end
   local n0 = 5 + floor(35 * rng:next() ^ 2)
   for _ = 1, n0 do self:addBody(w:newBody(), rng:next() < 0.6 and w:randomOpts() or nil) end
-  if F.crowd and self.index % 25 == 0 then self:crowd() end
+  if F.crowd and self.index % 10 == 0 then self:crowd() end
   self:count('programs')
   self:count('bodies at the start', n0)
   while self.stepNo < steps do
@@ -2423,13 +2464,19 @@ function P:run(steps)
   if F.gc then self:gcCheck() end
 end
 
--- A row of coins and a bullet through them with a filter that crosses everything.
+-- A row of coins and a bullet through them with a filter that crosses everything; then the
+-- coins go (they would make every later step slow).
 function P:crowd()
   local w, rng = self.w, self.rng
-  local n = rng:int(60, 110)
+  local n = rng:int(66, 90)
   local s = w.s * 0.2
-  local x0, y = w.cx - n * s, w.cy + w:side()
-  for i = 1, n do self:addBody(w:register(S.hapes.Circle(x0 + 2 * s * i, y, s * 0.6), 'shape'), nil) end
+  local x0, y = w.cx - n * s, w.cy + 3 * w:side()
+  local pf = self.pf -- (no pair filter while the bullet flies: every coin counts)
+  if pf then self:setPairFilter(nil) end
+  local coins = {}
+  for i = 1, n do
+    coins[i] = self:addBody(w:register(S.hapes.Circle(x0 + 2 * s * i, y, s * 0.6), 'shape'), nil).body
+  end
   local bullet = w:register(S.hapes.Circle(x0 - 2 * s, y, s * 0.3), 'shape')
   self:addBody(bullet, nil)
   local sc = self:newScript('move', true)
@@ -2440,6 +2487,10 @@ function P:crowd()
   self:count('op move')
   self:count('crowd moves')
   self:top(function() Q.move(self, nil, nil, nil, plan) end)
+  self:top(function()
+    for _, c in ipairs(coins) do self:removeBody(c) end
+    if pf then self:setPairFilter(pf) end
+  end)
 end
 
 -- A path of fields from root to target (breadth first, through tables and upvalues), for a

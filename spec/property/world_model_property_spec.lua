@@ -16,10 +16,12 @@
 -- the model, and the events stay balanced. At the end of each program, nothing the program
 -- let go may be kept alive by the space.
 --
--- Replay: the failure message names the seed and the program (STRIKE_SEED=<seed>
--- STRIKE_PROGRAM=<n>, any VM) and lists the last calls. Each class of generated operation can
--- be switched off in FEATURES below (to look past a failure for the next one); everything is
--- on in the committed spec.
+-- Replay: a run goes through every program and lists each distinct failure once (how many
+-- programs, the first one) and the first in full: the seed and the program (STRIKE_SEED=<seed>
+-- STRIKE_PROGRAM=<n>, any VM) and the last calls, indented where they ran inside another
+-- (STRIKE_HISTORY=<n> shows more, STRIKE_TRACE=1 adds every call of a filter). Each class of
+-- generated operation can be switched off in FEATURES below or with STRIKE_FEATURES (to look
+-- past a failure for the next one); everything is on in the committed spec.
 local WM = require('spec.property.world_model')
 local PRNG = require('spec.helpers.prng')
 
@@ -30,12 +32,13 @@ local FEATURES = {
   junk = true,         -- out tables pre-filled with junk
   holeyJunk = true,    -- junk after a hole (a nil) in an out table
   swapOuts = true,     -- one query's out table passed to another
-  crowd = true,        -- a bullet with 'cross' through a row of 60-110 coins
+  crowd = true,        -- every 10th program: a bullet with 'cross' through a row of 66-90 coins
   gc = true,           -- removed bodies and dropped functions must not be kept alive
   gcStale = true,      -- ... not even by the space's pooled records and scratch lists
   touchProbe = true,   -- scripts may change the body a query asks about (check(b), queryShape(b), cast(b))
   strictRemoved = true, -- a body removed during a call never appears in its results (else: may)
   memberProbes = true, -- cast() of a member of a body in the space (check and queryShape of one always)
+  stuck = true,        -- check: a move never meets bodies at t = 0 eight legs in a row without moving
   scripts = true,      -- scripts have actions (without it: pure filters and callbacks)
   -- the actions of the scripts (each also by context: <action>In<QueryFilter|PairFilter|
   -- MoveFilter|Callback|Response> = false switches it off there only)
@@ -44,10 +47,18 @@ local FEATURES = {
   -- changes = { transform = false, ... } and queries = { move = false, ... } switch steps off
 }
 
--- STRIKE_FEATURES="gc=false,removeInPairFilter=false" switches features for a run.
+-- STRIKE_FEATURES="gc=false,removeInPairFilter=false,q.bodies=false" switches features for a
+-- run (q.<query> and c.<change>: that kind of step).
 for item in (os.getenv('STRIKE_FEATURES') or ''):gmatch('[^,%s]+') do
-  local k, v = item:match('^([%w_]+)=(%w+)$')
-  if k then FEATURES[k] = v == 'true' end
+  local k, v = item:match('^([%w_%.]+)=(%w+)$')
+  local group, name = (k or ''):match('^([qc])%.(%w+)$')
+  if group then
+    local t = group == 'q' and 'queries' or 'changes'
+    FEATURES[t] = FEATURES[t] or {}
+    FEATURES[t][name] = v == 'true'
+  elseif k then
+    FEATURES[k] = v == 'true'
+  end
 end
 
 local SEED = PRNG.seedFromEnv(20260521)
@@ -146,20 +157,41 @@ describe('the world against its model', function()
     assert((stats.steps or 0) >= 20000, ('seed %d: only %d steps'):format(SEED, stats.steps or 0))
     assert((stats['change then query'] or 0) * 2 >= 0.3 * stats.steps,
       ('seed %d: only %d changes followed at once by a query'):format(SEED, stats['change then query'] or 0))
+    local F = FEATURES
+    local function on(action, ctx) return F.scripts and F[action] and F[action .. 'In' .. ctx] ~= false end
     local need = {}
-    for _, q in ipairs(WM.QUERIES) do need[#need + 1] = 'op ' .. q end
-    for _, c in ipairs(WM.CHANGES) do need[#need + 1] = 'op ' .. c end
+    for _, q in ipairs(WM.QUERIES) do
+      if not (F.queries and F.queries[q] == false) then need[#need + 1] = 'op ' .. q end
+    end
+    for _, c in ipairs(WM.CHANGES) do
+      if (F.events or (c ~= 'on' and c ~= 'off')) and (F.responses or c ~= 'addResponse') then
+        need[#need + 1] = 'op ' .. c
+      end
+    end
     for _, a in ipairs(WM.ACTIONS) do
-      if FEATURES[a] then need[#need + 1] = 'action ' .. a end
+      if F.scripts and F[a] and (F.events or (a ~= 'on' and a ~= 'off')) then need[#need + 1] = 'action ' .. a end
     end
-    for _, k in ipairs({ 'errors caught by the program', 'errors caught by a script', 'events begin', 'events stay',
-      'events end', 'colliding pairs', 'move collisions', 'moves through everything', 'moves through 64 or more',
-      'snapped moves checked', 'rayCast hits', 'rayCastAll hits', 'cast hits', 'check hits', 'queryPoint hits',
-      'queryRect hits', 'queryShape hits', 'pair filter calls', 'collisions inside collisions',
-      'action remove in pair', 'action remove in query', 'action remove in move', 'action remove in event',
-      'action off in event', 'action raise in pair', 'action raise in event', 'action badCall in move' }) do
-      need[#need + 1] = k
+    local function want(cond, ...)
+      if cond then
+        for _, k in ipairs({ ... }) do need[#need + 1] = k end
+      end
     end
+    want(true, 'colliding pairs', 'move collisions', 'moves through everything', 'snapped moves checked',
+      'rayCast hits', 'rayCastAll hits', 'cast hits', 'check hits', 'queryPoint hits', 'queryRect hits',
+      'queryShape hits', 'pair filter calls', 'change then query')
+    want(F.events, 'events begin', 'events stay', 'events end')
+    want(F.crowd, 'moves through 64 or more')
+    want(F.scripts and F.raise, 'errors caught by the program')
+    want(F.scripts and F.caught, 'errors caught by a script')
+    want(F.events and on('collisions', 'PairFilter') and on('collisions', 'Callback'), 'collisions inside collisions')
+    want(on('remove', 'PairFilter'), 'action remove in pair')
+    want(on('remove', 'QueryFilter'), 'action remove in query')
+    want(on('remove', 'MoveFilter'), 'action remove in move')
+    want(F.events and on('remove', 'Callback'), 'action remove in event')
+    want(F.events and on('off', 'Callback'), 'action off in event')
+    want(on('raise', 'PairFilter'), 'action raise in pair')
+    want(F.events and on('raise', 'Callback'), 'action raise in event')
+    want(on('badCall', 'MoveFilter'), 'action badCall in move')
     for _, k in ipairs(need) do
       assert((stats[k] or 0) >= 20, ('seed %d: only %d %s'):format(SEED, stats[k] or 0, k))
     end
