@@ -1714,10 +1714,11 @@ function P:planMove(M, target)
     plan.script = self:newScript('move')
     plan.filter = self:moveFilterFn(plan.script, plan)
   end
-  if rng:next() < 0.45 then
+  local acts = plan.script and #plan.script.actions > 0
+  if rng:next() < (acts and 0.7 or 0.45) then
     local opts = {}
     if rng:next() < 0.8 then opts.snap = w.s * logRange(rng, 0.05, 2) end
-    if rng:next() < 0.7 then opts.slope = rng:range(0.2, 1.3) end
+    if rng:next() < (acts and 0.9 or 0.7) then opts.slope = rng:range(0.2, 1.3) end
     if rng:next() < 0.3 then
       local a = rng:range(-pi, pi)
       opts.up = { cos(a), sin(a) }
@@ -1846,7 +1847,7 @@ function P:checkMove(what, plan, pre, f, ax, ay, cols, k)
     local want = plan.script and self:moveResp(plan.script, o) or 'slide'
     self:check(col.type == want, '%s: collision %d with %s has type %s; the filter says %s', what, i, o, col.type, want)
     if PASS[want] then
-      self:check(not onceSeen[o], '%s: %s (%s) met twice in one move', what, o, want)
+      self:check(not onceSeen[o], '%s: %s (%s) met twice in one move; %s', what, o, want, colsDesc())
       onceSeen[o] = true
     end
     local nl = sqrt(col.nx * col.nx + col.ny * col.ny)
@@ -2188,6 +2189,7 @@ ACTIONS.badCall = function(self, s, ctx)
   }
   if not any then return end
   local i = rng:int(b and 1 or 5, #calls)
+  if b and ctx.kind == 'move' and rng:next() < 0.7 then i = rng:int(1, 2) end -- (the outer move keeps its options?)
   local desc, ok, e = calls[i]()
   self:log('%s: bad call: %s', s.tag, desc)
   if not ok and (isFailure(e) or isBoom(e)) then error(e, 0) end
