@@ -1695,6 +1695,7 @@ function P:moveResponse(plan, e)
 end
 
 local PASS = { cross = true, passer = true }
+local ONE_LEAF = { shape = true, single = true, transient = true }
 local SOLID = { slide = true, touch = true, bounce = true, stopper = true }
 
 -- A random move of M (a body in the space) toward the target (or nearby), with a filter and
@@ -1997,7 +1998,9 @@ function P:checkMove(what, plan, pre, f, ax, ay, cols, k)
   end
   -- the skin: it never rests exactly touching a solid body it met ("space:move stops a skin
   -- short of what it meets, so the body never rests exactly touching"; but a leg that starts
-  -- touching, t = 0, stops where it starts: "never before its start"; chains are one-sided)
+  -- touching, t = 0, stops where it starts: "never before its start"; chains are one-sided;
+  -- and for bodies of one leaf each: a compound met through one member may end touching
+  -- another that the move only grazed, which is no hit)
   local atStart = {}
   for i = 1, k do
     if cols[i].t <= 0 then atStart[cols[i].other] = true end
@@ -2006,7 +2009,7 @@ function P:checkMove(what, plan, pre, f, ax, ay, cols, k)
   for i = 1, k do
     local o = cols[i].other
     if SOLID[cols[i].type] and self:E(o) and not pre.mtv[o] and not (f.moved[o] or f.added[o] or f.opts[o])
-      and not atStart[o] and info[M].kind ~= 'chain' and info[o].kind ~= 'chain' then
+      and not atStart[o] and ONE_LEAF[info[M].kind] and ONE_LEAF[info[o].kind] then
       local d = S.eparation(M, o)
       self:check(d > 0, '%s: it rests %s from %s, which it met (collision %d): touching, not a skin away; %s', what, d,
         o, i, colsDesc())
