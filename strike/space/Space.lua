@@ -135,12 +135,14 @@ local function recover(self)
   end
   local lists = rawget(self, '_cols')
   if lists then
-    for d = 1, #lists do
-      local cols = lists[d]
-      local visited = cols.visited
-      for i = 1, #cols do
-        local other = cols[i].other
-        if other then visited[other] = nil end
+    for d = 1, #levels do
+      local cols = lists[d] -- (none for a level no move ran at)
+      if cols then
+        local visited = cols.visited
+        for i = 1, #cols do
+          local other = cols[i].other
+          if other then visited[other] = nil end
+        end
       end
     end
   end
@@ -980,7 +982,9 @@ local function trimRecords(out, k, mark)
   trim(out, k)
 end
 
-local function newPair() return { a = false, b = false, mtv = false, _m = MTV() } end
+-- (check's records are marked `_check`: the space's own pair records, from collisions(), have
+-- an `_m` too, and an `out` that holds them must not have them reused)
+local function newPair() return { a = false, b = false, mtv = false, _m = MTV(), _check = true } end
 local function newHit() return { _rank = 0 } end
 
 -- May a query's filter (checked: nil, a function or a layer filter) run game code?
@@ -1004,11 +1008,14 @@ local function checkOf(self, body, filterArg, out)
       -- (other is false when a filter removed it since)
       if other and id ~= self_id and not sensor[id] and queryFilter(filterArg, other, layer[id]) then
         local ok = true
-        if inside then
+        -- (the filter may have removed the body asked about, or this one: then no more pairs
+        -- of it, nor this one)
+        if inside and bodies[self_id] ~= body then break end
+        if bodies[id] ~= other then ok = false elseif inside then
           if rank[self_id] < rank[id] then ok = allowed(self, self_id, id) else ok = allowed(self, id, self_id) end
         end
-        if ok and bodies[id] == other and (not inside or present(self, body)) then
-          local rec = outRecord(out, k + 1, '_m', newPair)
+        if ok and bodies[id] == other and (not inside or bodies[self_id] == body) then
+          local rec = outRecord(out, k + 1, '_check', newPair)
           if collide(body, other, rec._m) then
             k = k + 1
             rec.a, rec.b, rec.mtv = body, other, rec._m
@@ -1019,7 +1026,7 @@ local function checkOf(self, body, filterArg, out)
     leave(self, level)
     if self._removals ~= removals then k = dropRemoved(self, out, k, 'b') end
   end
-  trimRecords(out, k, '_m')
+  trimRecords(out, k, '_check')
   return out, k
 end
 

@@ -66,6 +66,13 @@ Space.REACH = limits.REACH
 -- The skin of a body of size `size`.
 local function skinAt(size) return Space.SKIN * size end
 
+--- A move that starts overlapping a body meets it only when its part along the MTV, into the
+--- body, is more than INTO of its length: a slide along a body leaves the rest of the move a
+--- few units in the last place into it (up to about 1e-15 of its length), and a move
+--- that met it again for that would slide leg after leg without going anywhere.
+Space.INTO = 1e-12
+local INTO = Space.INTO
+
 local mtv = MTV()
 local hitScratch = {}
 
@@ -153,7 +160,9 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
               local m = collide(b, other, mtv)
               if m and m.collidedShape._kind ~= 'chain' and m.colliderShape._kind ~= 'chain' then
                 t = nil
-                if dx * m.nx + dy * m.ny > 0 then -- (only when the move goes further in)
+                -- (only when the move goes further in: by more than INTO of its length, what the
+                -- rounding of a slide along that body leaves of the move into it)
+                if dx * m.nx + dy * m.ny > INTO * dl then
                   overlapHit(m, hitScratch)
                   t, x, y, nx, ny, corner, overlapping = 0, hitScratch.x, hitScratch.y, hitScratch.nx, hitScratch.ny,
                     false, true
@@ -218,7 +227,9 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
     end
     for h = 1, nh do hits[h] = false end -- (nothing kept alive)
     if rechosen then
+      if not found then out.body, out.pick = nil, nil end
       out.fit = false
+      one1[1], one2[1] = nil, nil
       return found
     end
   end
@@ -243,11 +254,13 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
       elseif d > 0 and d <= skin and oy1 > ay1 then sy = -d end
       if sx ~= 0 or sy ~= 0 then
         out.fit, out.mx, out.my, out.sx, out.sy = true, mx, my, sx, sy
+        one1[1], one2[1] = nil, nil
         return true
       end
     end
     out.fit = false
   end
+  one1[1], one2[1] = nil, nil -- (the one-leaf lists keep no body alive)
   return found
 end
 
@@ -262,9 +275,10 @@ end
 -- cast's rule for a candidate: the query filter, and the pair rules for a body in the space.
 local function castPick(level, other, id)
   local self = level.space
-  if not queryFilter(level.filter, other, self._layer[id]) then return false end
+  if not queryFilter(level.filter, other, self._layer[id]) or self._body[id] ~= other then return false end
   local sid = level.sid
-  return not sid or pairAllowed(self, sid, id)
+  -- (the filter may have removed the body cast: it is then cast as a body of no space)
+  return not sid or self._body[sid] ~= level.body or pairAllowed(self, sid, id)
 end
 
 local function castOf(self, body, dx, dy, filterArg, out, game)
@@ -272,10 +286,10 @@ local function castOf(self, body, dx, dy, filterArg, out, game)
   local sid = ownId(self, 'strike.Space:cast', body) -- (false when it is not in this space)
   if sid and self._sensor[sid] then return false end
   local level = enter(self)
-  level.filter, level.sid = filterArg, sid
+  level.filter, level.sid, level.body = filterArg, sid, body
   local found = first(self, level, body, sid, dx, dy, castPick, level, false, out, nil, 0, game)
   leave(self, level)
-  level.filter, level.sid = false, false
+  level.filter, level.sid, level.body = false, false, false
   if not found then
     out.body, out.pick = nil, nil
     return false
@@ -384,9 +398,13 @@ end
 -- move's response to body `other` (id): false when the pair rules forbid it or the filter
 -- says nil, else the filter's response name ('slide' without a filter).
 local function response(level, other, id)
-  if not pairAllowed(level.space, level.sid, id) then return false end
+  local self = level.space
+  if not pairAllowed(self, level.sid, id) then return false end
   local f = level.filter
   if not f then return 'slide' end
+  -- (the pair filter may have removed it, or the body moved: the move filter is asked about
+  -- bodies of the space only)
+  if self._body[id] ~= other or self._body[level.sid] ~= level.body then return false end
   local name = f(level.body, other)
   if name == nil or name == false then return false end
   return name
