@@ -768,6 +768,7 @@ local function moveOf(self, body, sid, x, y, size, goalX, goalY, filterFn, upX, 
     leave(self, level)
     if cache then self._mover = 0 end
     level.filter, level.body, level.visited, level.sid = false, false, false, false
+    hit.body, hit.pick = nil, nil -- (a move a filter ended with a hit in hand: nothing kept alive)
     for i = 1, k do visited[cols[i].other] = nil end
   end
   local spare = cols.spare
