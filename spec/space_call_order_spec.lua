@@ -406,6 +406,22 @@ describe('S.pace call order', function()
       assert.equals(3, list[1]:getCentroid())
     end)
 
+    it('a nested query whose filter raises, caught by the outer filter: the outer call lets go of it too', function()
+      local sp = S.pace()
+      sp:add(H.Circle(0, 0, 5))
+      local weak = setmetatable({}, { __mode = 'k' })
+      local function bad() error('game bug', 0) end
+      weak[bad] = true
+      sp:queryPoint(0, 0, function()
+        assert.is_false(pcall(sp.rayCast, sp, -10, 0, 1, 0, nil, bad))
+        return true
+      end)
+      bad = nil -- luacheck: ignore 311
+      collectgarbage('collect')
+      collectgarbage('collect')
+      assert.is_nil(next(weak))
+    end)
+
     it('an error raised by a filter is raised again unchanged, and the next query works', function()
       local sp = S.pace()
       sp:add(tagged(H.Circle(0, 0, 5), 'a'))

@@ -126,6 +126,8 @@ local function leave(self, level) self._depth = level.index - 1 end
 
 -- What a call that a game's code interrupted with an error leaves behind, undone: every
 -- level free and holding nothing of the game's, no move under way, no body marked as met.
+-- Run at the end of every protected call at the top, whether it raised or not: a call it
+-- ran from a filter may have raised an error that the filter caught.
 local function recover(self)
   self._depth, self._mover = 0, 0
   local levels = self._levels
@@ -150,17 +152,16 @@ end
 
 local function finish(self, ok, ...)
   self._guard = false
-  if not ok then
-    recover(self)
-    error((...), 0)
-  end
+  recover(self)
+  if not ok then error((...), 0) end
   return ...
 end
 
 -- Run fn(self, ...) and return what it returns; when it raises an error (a game's filter
 -- or callback did, or strike found a game's value wrong), undo what the call left half done
--- (recover) and raise the same error again. Used by the calls at the top that may run the
--- game's code, only then (pcall costs a little); calls those run are protected by it.
+-- (recover; run after a call that returned too) and raise the same error again. Used by the
+-- calls at the top that may run the game's code, only then (pcall costs a little); calls
+-- those run are protected by it.
 local function protect(self, fn, ...)
   self._guard = true
   return finish(self, pcall(fn, self, ...))
@@ -865,6 +866,7 @@ end
 local function endCollisions(self, guard, ok, ...)
   self._inCollisions = false
   self._guard = guard
+  if not guard then recover(self) end
   if not ok then
     local fresh = self._fresh
     for p = 1, self._nfresh do
@@ -874,7 +876,6 @@ local function endCollisions(self, guard, ok, ...)
       poolRecord(self, rec)
     end
     self._nfresh = 0
-    if not guard then recover(self) end
     error((...), 0)
   end
   return ...
