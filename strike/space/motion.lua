@@ -87,6 +87,17 @@ local hitScratch = {}
 -- remove bodies: a body removed is not hit, nor is one removed after it was (the hits are
 -- kept in level.hits to choose again from); moving the body `b` itself is an error.
 -- `skin`: a leg of a move, whose first hit may be an exact fit (see graze).
+-- The tolerance of ties between two bodies' hits in first, in t: the sweeps' tolerance for
+-- the neighbourhood of the mover (its box at the start, a0-a1; the box it sweeps, x0-x1), as
+-- kernels.lua's Tolerances: far less than the skin a stop leaves, in the range of motion.
+local function tieOf(x0, y0, x1, y1, ax0, ay0, ax1, ay1, dl)
+  if dl == 0 then return 0 end
+  local m = x1 > -x0 and x1 or -x0 -- (the largest coordinate of the box swept: kernels.reach)
+  if y1 > m then m = y1 end
+  if -y0 > m then m = -y0 end
+  return (TIE * ((ax1 - ax0) + (ay1 - ay0)) + ROUND * m) / dl
+end
+
 local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cache, pad, game, skin)
   local x0, y0, x1, y1 = b:getBounds()
   local ax0, ay0, ax1, ay1 = x0, y0, x1, y1
@@ -119,16 +130,12 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
   local found, bt, bcorner, badn = false, huge, false, huge
   local ox0, oy0, ox1, oy1 = 0, 0, 0, 0 -- (the bounds of the body hit, for an exact fit)
   local dl = sqrt(dx * dx + dy * dy)
-  local removals, pose, hits, nh = self._removals, na > 0 and la[1]._pose, level.hits, 0
+  local removals, pose, hits, nh = 0, false, false, 0
+  if game then removals, pose, hits = self._removals, na > 0 and la[1]._pose, level.hits end
   -- (ties between bodies: within the sweeps' tolerance for the mover's neighbourhood, as
-  -- kernels.lua's Tolerances, in t: far less than the skin a stop leaves, in the range of motion)
-  local tieT = 0
-  if dl > 0 then
-    local m = x1 > -x0 and x1 or -x0 -- (the largest coordinate of the box swept: kernels.reach)
-    if y1 > m then m = y1 end
-    if -y0 > m then m = -y0 end
-    tieT = (TIE * ((ax1 - ax0) + (ay1 - ay0)) + ROUND * m) / dl
-  end
+  -- kernels.lua's Tolerances, in t: far less than the skin a stop leaves, in the range of motion;
+  -- computed when a second hit is found)
+  local tieT = -1
   for c = 1, n do
     local id = ids[c]
     local other = bodies[id]
@@ -186,6 +193,7 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
         end
         if t then
           local adn = abs(dx * nx + dy * ny)
+          if found and tieT < 0 then tieT = tieOf(x0, y0, x1, y1, ax0, ay0, ax1, ay1, dl) end
           if not found or better(t, corner, adn, bt, bcorner, badn, tieT) then
             found, bt, bcorner, badn = true, t, corner, adn
             out.t, out.x, out.y, out.nx, out.ny, out.overlapping = t, x, y, nx, ny, overlapping
@@ -215,6 +223,7 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
       -- (a filter removed the body hit after it was found: the first of those left; no exact
       -- fit is looked for then)
       found = false
+      if tieT < 0 then tieT = tieOf(x0, y0, x1, y1, ax0, ay0, ax1, ay1, dl) end
       for h = 1, nh, 10 do
         local other, t, corner, adn = hits[h], hits[h + 1], hits[h + 6], hits[h + 8]
         if present(self, other) and (not found or better(t, corner, adn, bt, bcorner, badn, tieT)) then
@@ -229,7 +238,6 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
     if rechosen then
       if not found then out.body, out.pick = nil, nil end
       out.fit = false
-      one1[1], one2[1] = nil, nil
       return found
     end
   end
@@ -254,13 +262,11 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
       elseif d > 0 and d <= skin and oy1 > ay1 then sy = -d end
       if sx ~= 0 or sy ~= 0 then
         out.fit, out.mx, out.my, out.sx, out.sy = true, mx, my, sx, sy
-        one1[1], one2[1] = nil, nil
         return true
       end
     end
     out.fit = false
   end
-  one1[1], one2[1] = nil, nil -- (the one-leaf lists keep no body alive)
   return found
 end
 
@@ -290,6 +296,8 @@ local function castOf(self, body, dx, dy, filterArg, out, game)
   local found = first(self, level, body, sid, dx, dy, castPick, level, false, out, nil, 0, game)
   leave(self, level)
   level.filter, level.sid, level.body = false, false, false
+  local one1, one2 = level.one1, level.one2 -- (the one-leaf lists keep no body alive)
+  if one1 then one1[1], one2[1] = nil, nil end
   if not found then
     out.body, out.pick = nil, nil
     return false
@@ -643,7 +651,8 @@ local function moveOf(self, body, sid, x, y, size, goalX, goalY, filterFn, upX, 
   local F = 'strike.Space:move'
   local level = enter(self)
   level.upX, level.upY, level.walkCos, level.snapH, level.stepH = upX, upY, walkCos, snapH, stepH
-  local cols = listOf(self, level)
+  local lists = rawget(self, '_cols')
+  local cols = lists and lists[level.index] or listOf(self, level)
   local visited, hit = cols.visited, cols.hit
   -- (a move that a filter or response interrupted with an error left its marks: clear them)
   for i = 1, #cols do
@@ -769,6 +778,8 @@ local function moveOf(self, body, sid, x, y, size, goalX, goalY, filterFn, upX, 
     if cache then self._mover = 0 end
     level.filter, level.body, level.visited, level.sid = false, false, false, false
     hit.body, hit.pick = nil, nil -- (a move a filter ended with a hit in hand: nothing kept alive)
+    local one1, one2 = level.one1, level.one2 -- (nor the one-leaf lists)
+    if one1 then one1[1], one2[1] = nil, nil end
     for i = 1, k do visited[cols[i].other] = nil end
   end
   local spare = cols.spare
@@ -829,7 +840,8 @@ function Space:move(body, goalX, goalY, filterFn, opts)
     and goalY >= nlim) then
     size = checkReach(F, size, x, y, goalX, goalY)
   end
-  local upX, upY, walkCos, snapH, stepH = readOptions(F, opts)
+  local upX, upY, walkCos, snapH, stepH = 0, -1, false, 0, 0
+  if opts ~= nil then upX, upY, walkCos, snapH, stepH = readOptions(F, opts) end
   -- (the game's code runs in the move when it has a filter or the space a pair filter)
   local game = filterFn ~= nil or self._pairFilter and true or false
   local character = opts ~= nil -- (the walkable-ground slide: README, "Characters")
