@@ -21,7 +21,9 @@
 -- STRIKE_PROGRAM=<n>, any VM) and the last calls, indented where they ran inside another
 -- (STRIKE_HISTORY=<n> shows more, STRIKE_TRACE=1 adds every call of a filter). Each class of
 -- generated operation can be switched off in FEATURES below or with STRIKE_FEATURES (to look
--- past a failure for the next one); everything is on in the committed spec.
+-- past a failure for the next one); everything is on in the committed spec, but for the
+-- few switches marked OFF below: each names a bug of the library, with its reproduction,
+-- and goes back on when the library is fixed (STRIKE_FEATURES="stuck=true" shows it).
 local WM = require('spec.property.world_model')
 local PRNG = require('spec.helpers.prng')
 
@@ -34,16 +36,75 @@ local FEATURES = {
   swapOuts = true,     -- one query's out table passed to another
   crowd = true,        -- every 10th program: a bullet with 'cross' through a row of 66-90 coins
   gc = true,           -- removed bodies and dropped functions must not be kept alive
-  gcStale = true,      -- ... not even by the space's pooled records and scratch lists
   touchProbe = true,   -- scripts may change the body a query asks about (check(b), queryShape(b), cast(b))
+  -- OFF until the library is fixed (report of the model2 helper): a query whose filter raises
+  -- an error that the game's code run by collisions() (a callback, the pair filter) catches
+  -- leaves the space one level deeper when collisions() returns (space._depth), and that
+  -- level keeps the filter alive; each such error adds a level. Repro:
+  --   sp:add(S.hapes.Circle(0, 0, 1)); sp:add(S.hapes.Circle(1, 0, 1))
+  --   sp:on('begin', function() pcall(sp.queryPoint, sp, 0, 0, function() error('x') end) end)
+  --   sp:collisions() -- now sp._depth == 1 and sp._levels[1].filter is that function
+  -- Off: no 'caught' action in callbacks and pair filters, and the errors a move or cast
+  -- run from them raises as the README promises are passed on (raised again), not caught.
+  caughtInCollisions = false,
+  -- OFF until the library is fixed (report of the model2 helper): a rayCast, cast or move
+  -- whose filter raises an error that the game's code around it catches (inside another
+  -- call's filter) leaves its level's fields set -- space._levels[d].filter and, for cast
+  -- and move, .body -- so the filter and the body stay alive until a query runs at that
+  -- depth again (found by the end-of-program check: seed 20260521, programs 77 and 194).
+  -- Repro:
+  --   local probe = sp:add(S.hapes.Circle(5, 0, 1)); sp:add(S.hapes.Circle(0, 0, 1))
+  --   sp:queryPoint(0, 0, function() pcall(sp.cast, sp, probe, -10, 0, function() error('x') end) return true end)
+  --   -- now sp._levels[2].filter is that filter and sp._levels[2].body is probe
+  -- Off: the 'caught' action uses no rayCast or cast, and the errors a nested move or cast
+  -- raises as the README promises are passed on (raised again), not caught.
+  levelsLetGo = false,
+  -- check: a body passed through with a response of the game's is not met again in the same
+  -- move (README, "Moving bodies"). OFF until the library or the README is fixed (report of
+  -- the model2 helper): the snap lands on such a body, and reports it a second time (seed
+  -- 20260521, program 37). Repro: a response 'passer' that returns the goal, a body of two
+  -- plates one above the other, a box moving down through the upper one with snap 1:
+  --   sp:addResponse('passer', function(_, col, _, _, gx, gy) return col.touchX, col.touchY, gx, gy end)
+  --   local shelf = sp:add(S.trikers.Collider(S.hapes.Rectangle(0, 0, 8, 2):translate(0, 5),
+  --     S.hapes.Rectangle(0, 0, 8, 2):translate(0, 11)))
+  --   local box = sp:add(S.hapes.Rectangle(0, 0, 2, 2):translate(0, 1))
+  --   sp:move(box, 0, 8.5, function() return 'passer' end, { snap = 1 }) -- the shelf twice, 'passer'
+  -- Off: the move's last collision, the snap's, may repeat such a body.
+  passedOnceWithSnap = false,
+  -- the end-of-program check covers a level's hit list, one-leaf lists and step probe
+  -- (space._levels[d].hits, .one1, .one2, .stepHit.body) and a move level's hit
+  -- (space._cols[d].hit.body). OFF until the library is fixed (report of the model2
+  -- helper): a move or cast that an error stops after it found a hit (its filter raised on a
+  -- later body, or moved the body being moved) leaves them naming the body hit, and
+  -- recover() does not clear them (seed 20260521, programs 156, 162, 284; seed 2, program
+  -- 246). Repro:
+  --   local wall = sp:add(S.hapes.Rectangle(0, 0, 2, 10):translate(5, 0))
+  --   local wall2 = sp:add(S.hapes.Rectangle(0, 0, 2, 10):translate(8, 0))
+  --   local box = sp:add(S.hapes.Rectangle(0, 0, 2, 2))
+  --   pcall(sp.move, sp, box, 10, 0, function(_, o) if o == wall2 then error('boom') end return 'slide' end)
+  --   sp:remove(wall) -- sp._levels[1].hits[1], ._levels[1].one2[1] and ._cols[1].hit.body name it
+  errorScratchLetsGo = false,
   strictRemoved = true, -- a body removed during a call never appears in its results (else: may)
   memberProbes = true, -- cast() of a member of a body in the space (check and queryShape of one always)
-  stuck = true,        -- check: a move never meets bodies at t = 0 eight legs in a row without moving
+  -- check: a move never meets bodies at t = 0 eight legs in a row without moving. OFF until
+  -- the library is fixed (report of the model2 helper): a body that starts inside another
+  -- and moves into it slides along it at t = 0 leg after leg from the same place (each leg's
+  -- rounding, relative to the coordinates, is more than INTO of the short leg a slide
+  -- leaves), up to the 64-leg cap, where it stops short of where its responses take it
+  -- (seed 20260521, programs 27, 121, 159, 169, 268). Repro (19 collisions, 18 at t = 0 from
+  -- the same place):
+  --   local wall = sp:add(S.hapes.Rectangle(0, 0, 20, 20):rotate(0.44040117573011717)
+  --     :translate(-730.53994517914953, 2.641374034640088))
+  --   local box = sp:add(S.hapes.Rectangle(0, 0, 4, 4):rotate(-2.1774395039200036)
+  --     :translate(-738.11804636637862, -5.3318550725734681))
+  --   sp:move(box, -736.6110898399678, -4.6196211617321108)
+  stuck = false,
   scripts = true,      -- scripts have actions (without it: pure filters and callbacks)
   -- the actions of the scripts (each also by context: <action>In<QueryFilter|PairFilter|
   -- MoveFilter|Callback|Response> = false switches it off there only)
   query = true, collisions = true, remove = true, add = true, transform = true, spaceMove = true, member = true,
   set = true, setFilter = true, on = true, off = true, raise = true, badCall = true, caught = true,
+  moveSubject = true, -- (a move's or cast's filter moves the body being moved: the README's error)
   -- changes = { transform = false, ... } and queries = { move = false, ... } switch steps off
 }
 
@@ -192,6 +253,17 @@ describe('the world against its model', function()
     want(on('raise', 'PairFilter'), 'action raise in pair')
     want(F.events and on('raise', 'Callback'), 'action raise in event')
     want(on('badCall', 'MoveFilter'), 'action badCall in move')
+    -- an error in a callback: the next collisions() runs the rest of the events first, the
+    -- callbacks after the one that raised get its event then; an error in the pair filter
+    -- forgets the call's pairs
+    want(F.events and on('raise', 'Callback'), 'collisions stopped in a callback', 'resumed events',
+      'resumed deliveries')
+    want(F.events and on('raise', 'PairFilter'), 'collisions stopped in the pair filter')
+    -- a filter that moves the body being moved: the README's error; moves and casts out of
+    -- the range of motion: the error naming the limit
+    want(on('moveSubject', 'MoveFilter'), 'action moveSubject in move', 'subject-moved errors')
+    want(on('moveSubject', 'QueryFilter'), 'action moveSubject in query')
+    want(true, 'out-of-range calls')
     for _, k in ipairs(need) do
       assert((stats[k] or 0) >= 20, ('seed %d: only %d %s'):format(SEED, stats[k] or 0, k))
     end
