@@ -256,7 +256,9 @@ end
 
 function P:removeBody(body)
   -- (the events of a pair whose body goes are not delivered after this: see inList)
-  self.rankGone[self:E(body).rank] = self.evSerial
+  local e = self:E(body)
+  self.rankGone[e.rank] = self.evSerial
+  for _, f in ipairs(self.frames) do f.gone[body] = e end
   self.w:remove(body)
   self:effect('removed', body)
   -- half the bodies removed are forgotten by the model: the space must not keep them alive
@@ -283,7 +285,8 @@ end
 -- `transformed`: the bodies moved as a whole (a transform of the body itself, or a
 -- space:move of it), which the README forbids for the body a move or cast is moving.
 function P:push(kind)
-  local f = { kind = kind, removed = {}, added = {}, moved = {}, opts = {}, transformed = {}, pf = false, any = false }
+  local f = { kind = kind, removed = {}, added = {}, moved = {}, opts = {}, transformed = {}, pf = false, any = false,
+    gone = {} } -- (gone: a body removed -> its entry then)
   self.frames[#self.frames + 1] = f
   return f
 end
@@ -1629,13 +1632,29 @@ end
 -- Is the pair `key` (of bodies a, b) in the list the call of segment seg made: 'yes', 'no',
 -- or 'maybe' (a body changed during the call: README, "bodies added or moved during the
 -- call may or may not count for it"). A body removed before the call's own events (before
--- it, by an event of the call before, by the pair filter) is in none of its pairs.
+-- it, by an event of the call before, by the pair filter) is in none of its pairs; one
+-- removed during them, and not changed otherwise, is in the pairs it had.
 function P:inList(seg, key, a, b)
-  local ga, gb = self.rankGone[floor(key / K)], self.rankGone[key % K]
+  local ra, rb = floor(key / K), key % K
+  local ga, gb = self.rankGone[ra], self.rankGone[rb]
   if ga and ga <= seg.oStart or gb and gb <= seg.oStart then return 'no' end
   local f = seg.f
-  if f.pf or changed(f, a) or changed(f, b) then return 'maybe' end
-  return seg.byKey[key] and 'yes' or 'no'
+  if f.pf or f.moved[a] or f.moved[b] or f.added[a] or f.added[b] or f.opts[a] or f.opts[b] then return 'maybe' end
+  if not (f.removed[a] or f.removed[b]) then return seg.byKey[key] and 'yes' or 'no' end
+  -- (removed during the events: the pair as it was, by the rule and S.triking)
+  local ea, eb = f.gone[a] or self:E(a), f.gone[b] or self:E(b)
+  if not (ea and eb and ea.rank == ra and eb.rank == rb) then return 'maybe' end
+  local memo = seg.memo
+  if not memo then
+    memo = {}
+    seg.memo = memo
+  end
+  local v = memo[key]
+  if v == nil then
+    v = self:allowed(ea, eb) and S.triking(a, b) and 'yes' or 'no'
+    memo[key] = v
+  end
+  return v
 end
 
 -- What a failing interpretation of a call's events raises (see checkEvents).
@@ -1692,8 +1711,8 @@ function P:validatePart(bad, seg, evs, i0, i1, ptr, open, complete, serial0)
         bad(i, 'event %d: stay %s-%s, which never began', i, a, b)
       end
       got[k] = true
-      if st == 'yes' then
-        local p = seg.byKey[k]
+      local p = st == 'yes' and seg.byKey[k] -- (none for a body removed since: see inList)
+      if p then
         if ev.sensor ~= p.sensor then bad(i, 'event %d (%s %s-%s): record.sensor %s', i, E, a, b, ev.sensor) end
         if p.sensor then
           if ev.mtv ~= false then bad(i, 'event %d (%s %s-%s): a sensor pair with mtv %s', i, E, a, b, ev.mtv) end
@@ -1789,9 +1808,8 @@ end
 -- followed by a sequence of its own. Where one ends is not always known (a pair that
 -- changed during the old call may or may not be in its rest), so every split is tried,
 -- and every call an error stopped that fits is kept as a possible state for the next one.
-function P:checkEvents(what, ctx, outcome)
+function P:checkEvents(what, ctx, outcome, seg)
   local evs, m = ctx.log, #ctx.log
-  local seg = self:segment(ctx.frame)
   local hyps = #self.pends > 0 and self.pends or { false }
   local results, best = {}, nil
   self.curFrame = ctx.frame
@@ -1855,7 +1873,8 @@ function Q.collisions(self)
       self:fail('%s raised %s, which came neither from its pair filter nor from a callback', what, tostring(r[2]))
     end
   end
-  if outcome == 'completed' then self:checkList(what, f, r[2], r[3], out) end
+  local seg = (outcome == 'completed' or self.events) and self:segment(f)
+  if outcome == 'completed' then self:checkList(what, f, seg, r[2], r[3], out) end
   if self.events then
     if outcome == 'callback' then
       self:check(ctx.cur ~= nil, '%s: a callback raised an error, and no event was running', what)
@@ -1864,18 +1883,16 @@ function Q.collisions(self)
     else
       self:finishEvent(ctx)
     end
-    self:checkEvents(what, ctx, outcome)
+    self:checkEvents(what, ctx, outcome, seg)
   end
   if not r[1] then error(r[2], 0) end
 end
 
 -- collisions()' list: every solid pair the model has, in pair order, none of a body removed
 -- during the call (README: the list is compacted after the events).
-function P:checkList(what, f, got, n, out)
+function P:checkList(what, f, seg, got, n, out)
   self:listEnd(what, got, n, out)
-  local cur = self:touching()
-  local curKey = {}
-  for _, p in ipairs(cur) do curKey[p.key] = p end
+  local cur, curKey = seg.cur, seg.byKey
   local function pairUnsure(a, b) return f.pf or changed(f, a) or changed(f, b) end
   local last, seen = -1, {}
   for i = 1, n do
