@@ -2169,9 +2169,9 @@ function P:checkMove(what, plan, pre, f, ax, ay, cols, k)
     local want = plan.script and self:moveResp(plan.script, o) or 'slide'
     self:check(col.type == want, '%s: collision %d with %s has type %s; the filter says %s', what, i, o, col.type, want)
     if PASS[want] then
-      -- (FEATURES.passedOnceWithSnap off: the snap, the move's last collision, where it
-      -- ended, may land on a body met with a response of the game's)
-      local snap = not self.F.passedOnceWithSnap and want ~= 'cross' and i == k and plan.opts and plan.opts.snap
+      -- (the snap, a cast of its own after the legs and the move's last collision, where it
+      -- ended, may land on a body met with a response of the game's: README, "Moving bodies")
+      local snap = want ~= 'cross' and i == k and plan.opts and plan.opts.snap
         and plan.opts.snap > 0 and col.touchX == ax and col.touchY == ay
       self:check(not onceSeen[o] or snap, '%s: %s (%s) met twice in one move; %s', what, o, want, colsDesc())
       onceSeen[o] = true
@@ -2183,12 +2183,14 @@ function P:checkMove(what, plan, pre, f, ax, ay, cols, k)
   end
   self:count('move collisions', k)
   self:keep(what, cols, k, 'move')
-  -- no live-lock: a move does not go on meeting bodies at t = 0 without moving (the issue: a
-  -- cap on a move's legs never leaves a body short of where its responses take it)
+  -- no live-lock: a move does not go on meeting the same body at t = 0 without moving (the
+  -- issue: a cap on a move's legs never leaves a body short of where its responses take it).
+  -- (A body that starts inside several bodies whose responses turn it from one into the
+  -- next, bouncing, may meet them in turn without moving until the cap: it is trapped.)
   local run, longest = 0, 0
   for i = 1, k do
     local c, p = cols[i], cols[i - 1]
-    if c.t == 0 and p and p.t == 0 and c.touchX == p.touchX and c.touchY == p.touchY then
+    if c.t == 0 and p and p.t == 0 and c.other == p.other and c.touchX == p.touchX and c.touchY == p.touchY then
       run = run + 1
       if run > longest then longest = run end
     else
@@ -2196,7 +2198,8 @@ function P:checkMove(what, plan, pre, f, ax, ay, cols, k)
     end
   end
   if not f.any and self.F.stuck then
-    self:check(longest < 8, '%s: stuck: %d legs in a row meet a body at t = 0 and go nowhere (%d collisions); %s',
+    self:check(longest < 8,
+      '%s: stuck: %d legs in a row meet the same body at t = 0 and go nowhere (%d collisions); %s',
       what, longest + 1, k, colsDesc())
   end
   if f.pf or f.opts[M] or L == 0 then return end

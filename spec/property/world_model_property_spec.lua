@@ -46,7 +46,7 @@ local FEATURES = {
   --   sp:collisions() -- now sp._depth == 1 and sp._levels[1].filter is that function
   -- Off: no 'caught' action in callbacks and pair filters, and the errors a move or cast
   -- run from them raises as the README promises are passed on (raised again), not caught.
-  caughtInCollisions = false,
+  caughtInCollisions = true,
   -- OFF until the library is fixed (report of the model2 helper): a rayCast, cast or move
   -- whose filter raises an error that the game's code around it catches (inside another
   -- call's filter) leaves its level's fields set -- space._levels[d].filter and, for cast
@@ -58,19 +58,7 @@ local FEATURES = {
   --   -- now sp._levels[2].filter is that filter and sp._levels[2].body is probe
   -- Off: the 'caught' action uses no rayCast or cast, and the errors a nested move or cast
   -- raises as the README promises are passed on (raised again), not caught.
-  levelsLetGo = false,
-  -- check: a body passed through with a response of the game's is not met again in the same
-  -- move (README, "Moving bodies"). OFF until the library or the README is fixed (report of
-  -- the model2 helper): the snap lands on such a body, and reports it a second time (seed
-  -- 20260521, program 37). Repro: a response 'passer' that returns the goal, a body of two
-  -- plates one above the other, a box moving down through the upper one with snap 1:
-  --   sp:addResponse('passer', function(_, col, _, _, gx, gy) return col.touchX, col.touchY, gx, gy end)
-  --   local shelf = sp:add(S.trikers.Collider(S.hapes.Rectangle(0, 0, 8, 2):translate(0, 5),
-  --     S.hapes.Rectangle(0, 0, 8, 2):translate(0, 11)))
-  --   local box = sp:add(S.hapes.Rectangle(0, 0, 2, 2):translate(0, 1))
-  --   sp:move(box, 0, 8.5, function() return 'passer' end, { snap = 1 }) -- the shelf twice, 'passer'
-  -- Off: the move's last collision, the snap's, may repeat such a body.
-  passedOnceWithSnap = false,
+  levelsLetGo = true,
   -- the end-of-program check covers a level's hit list, one-leaf lists and step probe
   -- (space._levels[d].hits, .one1, .one2, .stepHit.body) and a move level's hit
   -- (space._cols[d].hit.body). OFF until the library is fixed (report of the model2
@@ -83,7 +71,7 @@ local FEATURES = {
   --   local box = sp:add(S.hapes.Rectangle(0, 0, 2, 2))
   --   pcall(sp.move, sp, box, 10, 0, function(_, o) if o == wall2 then error('boom') end return 'slide' end)
   --   sp:remove(wall) -- sp._levels[1].hits[1], ._levels[1].one2[1] and ._cols[1].hit.body name it
-  errorScratchLetsGo = false,
+  errorScratchLetsGo = true,
   strictRemoved = true, -- a body removed during a call never appears in its results (else: may)
   memberProbes = true, -- cast() of a member of a body in the space (check and queryShape of one always)
   -- check: a move never meets bodies at t = 0 eight legs in a row without moving. OFF until
@@ -98,7 +86,7 @@ local FEATURES = {
   --   local box = sp:add(S.hapes.Rectangle(0, 0, 4, 4):rotate(-2.1774395039200036)
   --     :translate(-738.11804636637862, -5.3318550725734681))
   --   sp:move(box, -736.6110898399678, -4.6196211617321108)
-  stuck = false,
+  stuck = true,
   scripts = true,      -- scripts have actions (without it: pure filters and callbacks)
   -- the actions of the scripts (each also by context: <action>In<QueryFilter|PairFilter|
   -- MoveFilter|Callback|Response> = false switches it off there only)

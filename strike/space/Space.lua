@@ -134,6 +134,15 @@ local function recover(self)
   for d = 1, #levels do
     local level = levels[d]
     level.filter, level.hit, level.shape, level.body, level.sid = false, false, false, false, false
+    -- the hits a rayCast or a move's leg had found when an error stopped it (a finished one
+    -- leaves them false), its one-leaf lists and its step's probe
+    local hits = level.hits
+    if hits and hits[1] then
+      for h = 1, #hits do hits[h] = false end
+    end
+    local one1, one2, probe = level.one1, level.one2, level.stepHit
+    if one1 then one1[1], one2[1] = nil, nil end
+    if probe then probe.body, probe.pick = nil, nil end
   end
   local lists = rawget(self, '_cols')
   if lists then
@@ -145,6 +154,7 @@ local function recover(self)
           local other = cols[i].other
           if other then visited[other] = nil end
         end
+        cols.hit.body, cols.hit.pick = nil, nil
       end
     end
   end

@@ -67,8 +67,8 @@ Space.REACH = limits.REACH
 local function skinAt(size) return Space.SKIN * size end
 
 --- A move that starts overlapping a body meets it only when its part along the MTV, into the
---- body, is more than INTO of its length: a slide along a body leaves the rest of the move a
---- few units in the last place into it (up to about 1e-15 of its length), and a move
+--- body, is more than INTO of its length plus limits.ROUND of its largest coordinate: a slide
+--- along a body leaves the rest of the move a few units in the last place into it, and a move
 --- that met it again for that would slide leg after leg without going anywhere.
 Space.INTO = 1e-12
 local INTO = Space.INTO
@@ -167,9 +167,13 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
               local m = collide(b, other, mtv)
               if m and m.collidedShape._kind ~= 'chain' and m.colliderShape._kind ~= 'chain' then
                 t = nil
-                -- (only when the move goes further in: by more than INTO of its length, what the
-                -- rounding of a slide along that body leaves of the move into it)
-                if dx * m.nx + dy * m.ny > INTO * dl then
+                -- (only when the move goes further in: by more than INTO of its length and the
+                -- rounding of its coordinates, what a slide along that body leaves of the move
+                -- into it)
+                local r = x1 > -x0 and x1 or -x0
+                if y1 > r then r = y1 end
+                if -y0 > r then r = -y0 end
+                if dx * m.nx + dy * m.ny > INTO * dl + ROUND * r then
                   overlapHit(m, hitScratch)
                   t, x, y, nx, ny, corner, overlapping = 0, hitScratch.x, hitScratch.y, hitScratch.nx, hitScratch.ny,
                     false, true
@@ -521,7 +525,8 @@ local function groundSlide(level, col, goalX, goalY)
 end
 
 -- move's rule for the extra casts of a step and a snap: every body the body would not
--- pass through (a response other than 'cross'), met before in this move or not.
+-- pass through (a response other than 'cross'), met before in this move or not (a body met
+-- with a response of the game's, which may have stopped the move there, is solid to them).
 local function solidPick(level, other, id)
   local name = response(level, other, id)
   if name == 'cross' then return false end
