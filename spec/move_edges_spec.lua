@@ -248,8 +248,8 @@ describe('Space:move and its legs', function()
   end
   local function crossing() return 'cross' end
 
-  it('\'cross\' passes through 63, 64, 65 and 1,000 bodies in one move, each reported in order', function()
-    for _, N in ipairs({ 63, 64, 65, 1000 }) do
+  it('\'cross\' passes through 63, 64, 65 and 300 bodies in one move, each reported in order', function()
+    for _, N in ipairs({ 63, 64, 65, 300 }) do
       local sp, walls, box = corridor(N)
       local goal = 20 + 2 * N
       local ax, ay, cols, n = sp:move(box, goal, 0, crossing)

@@ -11,11 +11,11 @@ local function run(fn, n)
 end
 
 --- KB allocated by `n` calls of `fn`: the least of three windows, each with the GC stopped
---- and after a warm-up of `warmup` calls (default 20,000) through the same loop.
+--- and after a warm-up of `warmup` calls (default 2,000) through the same loop.
 ---@param fn function @param n integer @param warmup integer|nil
 ---@return number
 function alloc.kbPer(fn, n, warmup)
-  run(fn, warmup or 20000)
+  run(fn, warmup or 2000)
   local least = huge
   for _ = 1, 3 do
     collectgarbage('collect')

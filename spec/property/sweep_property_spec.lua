@@ -6,6 +6,7 @@
 -- the oracle finds its minimum by ternary search. Reproduce a failure with STRIKE_SEED=<seed>.
 local S = require 'strike'
 local PRNG = require('spec.helpers.prng')
+local budget = require('spec.helpers.budget')
 local brute = require('spec.property.brute')
 local gen = require('spec.property.gen')
 
@@ -14,7 +15,7 @@ local abs, sqrt, cos, sin, pi, max = math.abs, math.sqrt, math.cos, math.sin, ma
 local unpack = table.unpack or unpack -- luacheck: ignore 113 143
 
 local SEED = PRNG.seedFromEnv(20261124)
-local CASES = 3000
+local CASES = budget.cases(3000) -- (a quarter on Lua 5.1-5.3: spec/helpers/budget.lua)
 
 -- The oracle's record of a shape: brute.of plus the rounding radius of a rounded shape.
 local function record(s)
