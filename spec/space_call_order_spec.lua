@@ -610,6 +610,31 @@ describe('S.pace call order', function()
       assert.truthy(x < 8 and x > 8 - 1e-3)
       assert.equals(0, sp._depth) -- (white box: every level free)
     end)
+    it('a move that starts inside a body meets it when it goes further in by more than the rule, not at it', function()
+      -- (README, "Moving bodies": more than space.INTO of its length plus 2^-48 of the largest
+      -- coordinate of the box it sweeps.) A 2 x 2 box at the origin, 0.5 into a wall on its
+      -- right (the push out of it along x exactly); a move of 10 along y, and dx into the wall:
+      -- its length is 10 exactly (dx^2 is lost beside 100), the box it sweeps reaches y = 11
+      local function moveBy(dx)
+        local sp = S.pace()
+        local wall = sp:add(T.Rectangle(5.5, 0, 10, 100))
+        local box = sp:add(T.Rectangle(0, 0, 2, 2))
+        local m = S.triking(box, wall)
+        assert(m.nx == 1 and m.ny == 0)
+        local x, _, cols, n = sp:move(box, dx, 10)
+        return n, x, cols[1] and cols[1].other == wall
+      end
+      local limit = S.pace().INTO * 10 + 2 ^ -48 * 11
+      local n, x = moveBy(limit)
+      assert.equals(0, n) -- (exactly the limit: no further in)
+      assert.equals(limit, x)
+      local met
+      n, x, met = moveBy(limit * (1 + 2 ^ -52)) -- (the next double: further in)
+      assert.equals(1, n)
+      assert.is_true(met)
+      assert.equals(0, x) -- (it slid along the wall)
+    end)
+
     it('a move that starts inside a body far from the origin slides once, not leg after leg at t = 0', function()
       -- (at 738 units from the origin the rounding of a slide's leg is more than INTO of a
       -- short leg: a model-based program found 19 collisions at t = 0 from the same place)
