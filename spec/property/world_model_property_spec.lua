@@ -21,9 +21,9 @@
 -- STRIKE_PROGRAM=<n>, any VM) and the last calls, indented where they ran inside another
 -- (STRIKE_HISTORY=<n> shows more, STRIKE_TRACE=1 adds every call of a filter). Each class of
 -- generated operation can be switched off in FEATURES below or with STRIKE_FEATURES (to look
--- past a failure for the next one); everything is on in the committed spec, but for the
--- few switches marked OFF below: each names a bug of the library, with its reproduction,
--- and goes back on when the library is fixed (STRIKE_FEATURES="stuck=true" shows it).
+-- past a failure for the next one); everything is on in the committed spec. A switch
+-- turned off for a bug of the library names it, with its reproduction, and goes back on
+-- when the library is fixed.
 local WM = require('spec.property.world_model')
 local PRNG = require('spec.helpers.prng')
 local budget = require('spec.helpers.budget')
@@ -38,55 +38,22 @@ local FEATURES = {
   crowd = true,        -- every 10th program: a bullet with 'cross' through a row of 66-90 coins
   gc = true,           -- removed bodies and dropped functions must not be kept alive
   touchProbe = true,   -- scripts may change the body a query asks about (check(b), queryShape(b), cast(b))
-  -- OFF until the library is fixed (report of the model2 helper): a query whose filter raises
-  -- an error that the game's code run by collisions() (a callback, the pair filter) catches
-  -- leaves the space one level deeper when collisions() returns (space._depth), and that
-  -- level keeps the filter alive; each such error adds a level. Repro:
-  --   sp:add(S.hapes.Circle(0, 0, 1)); sp:add(S.hapes.Circle(1, 0, 1))
-  --   sp:on('begin', function() pcall(sp.queryPoint, sp, 0, 0, function() error('x') end) end)
-  --   sp:collisions() -- now sp._depth == 1 and sp._levels[1].filter is that function
-  -- Off: no 'caught' action in callbacks and pair filters, and the errors a move or cast
-  -- run from them raises as the README promises are passed on (raised again), not caught.
+  -- 'caught' actions in callbacks and pair filters: a query whose filter raises an error that
+  -- the game's code run by collisions() catches (found: collisions() returned one level deep,
+  -- keeping the filter alive)
   caughtInCollisions = true,
-  -- OFF until the library is fixed (report of the model2 helper): a rayCast, cast or move
-  -- whose filter raises an error that the game's code around it catches (inside another
-  -- call's filter) leaves its level's fields set -- space._levels[d].filter and, for cast
-  -- and move, .body -- so the filter and the body stay alive until a query runs at that
-  -- depth again (found by the end-of-program check: seed 20260521, programs 77 and 194).
-  -- Repro:
-  --   local probe = sp:add(S.hapes.Circle(5, 0, 1)); sp:add(S.hapes.Circle(0, 0, 1))
-  --   sp:queryPoint(0, 0, function() pcall(sp.cast, sp, probe, -10, 0, function() error('x') end) return true end)
-  --   -- now sp._levels[2].filter is that filter and sp._levels[2].body is probe
-  -- Off: the 'caught' action uses no rayCast or cast, and the errors a nested move or cast
-  -- raises as the README promises are passed on (raised again), not caught.
+  -- 'caught' actions that rayCast and cast: an error the game's code around them catches
+  -- (found: the level kept the filter and the body cast alive)
   levelsLetGo = true,
-  -- the end-of-program check covers a level's hit list, one-leaf lists and step probe
-  -- (space._levels[d].hits, .one1, .one2, .stepHit.body) and a move level's hit
-  -- (space._cols[d].hit.body). OFF until the library is fixed (report of the model2
-  -- helper): a move or cast that an error stops after it found a hit (its filter raised on a
-  -- later body, or moved the body being moved) leaves them naming the body hit, and
-  -- recover() does not clear them (seed 20260521, programs 156, 162, 284; seed 2, program
-  -- 246). Repro:
-  --   local wall = sp:add(S.hapes.Rectangle(0, 0, 2, 10):translate(5, 0))
-  --   local wall2 = sp:add(S.hapes.Rectangle(0, 0, 2, 10):translate(8, 0))
-  --   local box = sp:add(S.hapes.Rectangle(0, 0, 2, 2))
-  --   pcall(sp.move, sp, box, 10, 0, function(_, o) if o == wall2 then error('boom') end return 'slide' end)
-  --   sp:remove(wall) -- sp._levels[1].hits[1], ._levels[1].one2[1] and ._cols[1].hit.body name it
+  -- the end-of-program check covers a level's hit list, one-leaf lists and step probe and a
+  -- move level's hit (found: a move that an error stopped after a hit kept the body hit alive;
+  -- spec/space_call_order_spec.lua has the repro)
   errorScratchLetsGo = true,
   strictRemoved = true, -- a body removed during a call never appears in its results (else: may)
   memberProbes = true, -- cast() of a member of a body in the space (check and queryShape of one always)
-  -- check: a move never meets bodies at t = 0 eight legs in a row without moving. OFF until
-  -- the library is fixed (report of the model2 helper): a body that starts inside another
-  -- and moves into it slides along it at t = 0 leg after leg from the same place (each leg's
-  -- rounding, relative to the coordinates, is more than INTO of the short leg a slide
-  -- leaves), up to the 64-leg cap, where it stops short of where its responses take it
-  -- (seed 20260521, programs 27, 121, 159, 169, 268). Repro (19 collisions, 18 at t = 0 from
-  -- the same place):
-  --   local wall = sp:add(S.hapes.Rectangle(0, 0, 20, 20):rotate(0.44040117573011717)
-  --     :translate(-730.53994517914953, 2.641374034640088))
-  --   local box = sp:add(S.hapes.Rectangle(0, 0, 4, 4):rotate(-2.1774395039200036)
-  --     :translate(-738.11804636637862, -5.3318550725734681))
-  --   sp:move(box, -736.6110898399678, -4.6196211617321108)
+  -- check: a move never meets the same body at t = 0 eight legs in a row without moving
+  -- (found: 19 legs from the same place, at 738 units from the origin; the repro is in
+  -- spec/space_call_order_spec.lua)
   stuck = true,
   scripts = true,      -- scripts have actions (without it: pure filters and callbacks)
   -- the actions of the scripts (each also by context: <action>In<QueryFilter|PairFilter|
