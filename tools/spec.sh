@@ -27,16 +27,16 @@ for ((i = ${#vms[@]} - 1; i >= 0; i--)); do
 done
 wait
 for vm in "${vms[@]}"; do
-  echo "== busted under $vm ($("$vm" -v 2>&1 | head -n 1))"
   log="$dir/$vm.log"
   rc=$(cat "$dir/$vm.rc" 2>/dev/null || echo 1)
   line=$(grep -E '^[0-9]+ success(es)? / [0-9]+ failures? / [0-9]+ errors? / [0-9]+ pending' "$log" | tail -n 1)
+  echo "== busted under $vm ($("$vm" -v 2>&1 | head -n 1)): $(echo "$line" | sed -nE 's/.*: ([0-9.]+) seconds.*/\1 s/p')"
   if [ -z "$line" ]; then
     cat "$log"; echo "== $vm: no test summary (exit $rc)" >&2; status=1; continue
   fi
   [ "$rc" -ne 0 ] && cat "$log"
   read -r s f e <<<"$(echo "$line" | awk -F' / ' '{ split($1,a," "); split($2,b," "); split($3,c," "); print a[1], b[1], c[1] }')"
-  echo "$vm: $s passed, $((f + e)) failed ($(echo "$line" | sed -E 's/.*: ([0-9.]+) seconds.*/\1/') s)"
+  echo "$vm: $s passed, $((f + e)) failed"
   passed=$((passed + s)); failed=$((failed + f + e))
   [ "$rc" -ne 0 ] && status=1
   ran+=("$vm")
