@@ -651,9 +651,64 @@ local function listOf(self, level)
   return cols
 end
 
-local function moveOf(self, body, sid, x, y, size, goalX, goalY, filterFn, upX, upY, walkCos, snapH, stepH, character,
-                      game)
+--- Move a body of this space so that its centroid goes toward (goalX, goalY), resolving what
+--- it meets on the way (see the header): returns the centroid it reached, the list of
+--- collisions in the order they happened and their count. `filter(body, other)` returns a
+--- response name for each other body ('slide', the default without a filter; 'touch',
+--- 'cross', 'bounce', or one added with addResponse), or nil to pass through it unreported.
+--- Each collision is `{other =, type =, t =, nx =, ny =, touchX =, touchY =, x =, y =,
+--- overlapping =}`: t the fraction of its leg at the touch, (nx, ny) the unit normal from
+--- other toward body, (touchX, touchY) the centroid where the body touched, (x, y) the
+--- contact point. The list and its records are reused by the next move. The filter and the
+--- responses may add, remove, move and query other bodies (README, "The space"); a body
+--- they remove is not met after; removing the body being moved ends the move there, and
+--- moving it is an error.
+--- Options for characters (README, "Characters"): `up` (a direction {x, y} of any finite
+--- length but 0; default {0, -1}, up on a LÖVE screen), `slope` (the steepest walkable
+--- slope, radians: on walkable ground a slide keeps the motion across `up` and never slides
+--- down), `snap` (a move that does not go up ends on walkable ground within this distance
+--- below, when there is some: no hops down a slope or a stair), `step` (a slide into a wall
+--- first tries to climb a ledge up to this high); snap and step are lengths from 0 to 1e100.
+---@param body strike.Collider|strike.Shape
+---@param goalX number
+---@param goalY number
+---@param filterFn function|nil
+---@param opts table|nil
+---@return number actualX
+---@return number actualY
+---@return table collisions
+---@return integer count
+function Space:move(body, goalX, goalY, filterFn, opts)
   local F = 'strike.Space:move'
+  if not isSpace(self) then badSelf(self, F) end
+  local sid = idOf(self, F, body)
+  if not (finite(goalX) and finite(goalY)) then
+    check.number(goalX, F, 'argument 2 (goalX)')
+    check.number(goalY, F, 'argument 3 (goalY)')
+  end
+  if filterFn ~= nil and type(filterFn) ~= 'function' then
+    fail(('%s: argument 4 (filter) must be a function (body, other) -> response name or nil, got %s'):format(F,
+      what(filterFn)))
+  end
+  -- (the range of motion, limits.lua, tested inline; the size the skin is relative to)
+  local x, y = body:getCentroid()
+  local size = body:getRadius()
+  local lim = CENTROID_REACH * size
+  local nlim = -lim
+  if not (x <= lim and x >= nlim and y <= lim and y >= nlim and goalX <= lim and goalX >= nlim and goalY <= lim
+    and goalY >= nlim) then
+    size = checkReach(F, size, x, y, goalX, goalY)
+  end
+  local upX, upY, walkCos, snapH, stepH = 0, -1, false, 0, 0
+  if opts ~= nil then upX, upY, walkCos, snapH, stepH = readOptions(F, opts) end
+  -- (the game's code runs in the move when it has a filter or the space a pair filter)
+  local game = filterFn ~= nil or self._pairFilter and true or false
+  local character = opts ~= nil -- (the walkable-ground slide: README, "Characters")
+  if game and not self._guard then
+    -- (protected: through this same function, which then finds the guard up and goes on; the
+    -- checks above pass again, the game's code having run in neither)
+    return protect(self, Space.move, body, goalX, goalY, filterFn, opts)
+  end
   local level = enter(self)
   level.upX, level.upY, level.walkCos, level.snapH, level.stepH = upX, upY, walkCos, snapH, stepH
   local lists = rawget(self, '_cols')
@@ -795,66 +850,6 @@ local function moveOf(self, body, sid, x, y, size, goalX, goalY, filterFn, upX, 
     cols[i] = nil
   end
   return x, y, cols, k
-end
-
---- Move a body of this space so that its centroid goes toward (goalX, goalY), resolving what
---- it meets on the way (see the header): returns the centroid it reached, the list of
---- collisions in the order they happened and their count. `filter(body, other)` returns a
---- response name for each other body ('slide', the default without a filter; 'touch',
---- 'cross', 'bounce', or one added with addResponse), or nil to pass through it unreported.
---- Each collision is `{other =, type =, t =, nx =, ny =, touchX =, touchY =, x =, y =,
---- overlapping =}`: t the fraction of its leg at the touch, (nx, ny) the unit normal from
---- other toward body, (touchX, touchY) the centroid where the body touched, (x, y) the
---- contact point. The list and its records are reused by the next move. The filter and the
---- responses may add, remove, move and query other bodies (README, "The space"); a body
---- they remove is not met after; removing the body being moved ends the move there, and
---- moving it is an error.
---- Options for characters (README, "Characters"): `up` (a direction {x, y} of any finite
---- length but 0; default {0, -1}, up on a LÖVE screen), `slope` (the steepest walkable
---- slope, radians: on walkable ground a slide keeps the motion across `up` and never slides
---- down), `snap` (a move that does not go up ends on walkable ground within this distance
---- below, when there is some: no hops down a slope or a stair), `step` (a slide into a wall
---- first tries to climb a ledge up to this high); snap and step are lengths from 0 to 1e100.
----@param body strike.Collider|strike.Shape
----@param goalX number
----@param goalY number
----@param filterFn function|nil
----@param opts table|nil
----@return number actualX
----@return number actualY
----@return table collisions
----@return integer count
-function Space:move(body, goalX, goalY, filterFn, opts)
-  local F = 'strike.Space:move'
-  if not isSpace(self) then badSelf(self, F) end
-  local sid = idOf(self, F, body)
-  if not (finite(goalX) and finite(goalY)) then
-    check.number(goalX, F, 'argument 2 (goalX)')
-    check.number(goalY, F, 'argument 3 (goalY)')
-  end
-  if filterFn ~= nil and type(filterFn) ~= 'function' then
-    fail(('%s: argument 4 (filter) must be a function (body, other) -> response name or nil, got %s'):format(F,
-      what(filterFn)))
-  end
-  -- (the range of motion, limits.lua, tested inline; the size the skin is relative to)
-  local x, y = body:getCentroid()
-  local size = body:getRadius()
-  local lim = CENTROID_REACH * size
-  local nlim = -lim
-  if not (x <= lim and x >= nlim and y <= lim and y >= nlim and goalX <= lim and goalX >= nlim and goalY <= lim
-    and goalY >= nlim) then
-    size = checkReach(F, size, x, y, goalX, goalY)
-  end
-  local upX, upY, walkCos, snapH, stepH = 0, -1, false, 0, 0
-  if opts ~= nil then upX, upY, walkCos, snapH, stepH = readOptions(F, opts) end
-  -- (the game's code runs in the move when it has a filter or the space a pair filter)
-  local game = filterFn ~= nil or self._pairFilter and true or false
-  local character = opts ~= nil -- (the walkable-ground slide: README, "Characters")
-  if game and not self._guard then
-    return protect(self, moveOf, body, sid, x, y, size, goalX, goalY, filterFn, upX, upY, walkCos, snapH, stepH,
-      character, game)
-  end
-  return moveOf(self, body, sid, x, y, size, goalX, goalY, filterFn, upX, upY, walkCos, snapH, stepH, character, game)
 end
 
 return Space
