@@ -351,6 +351,14 @@ describe('colliders nested 20,000 deep', function()
     mid._shapes = {}
     leaf:translate(1, 0)
     expect.raisesAt(function() deep:getArea() end, 'strike: the collider\'s field _shapes was changed (now table)')
+    -- the walk the error stopped lets go of what it held, and the next walks start afresh
+    local weak = setmetatable({ deep }, { __mode = 'v' })
+    deep, bottom, leaf, mid = nil, nil, nil, nil -- luacheck: ignore 311
+    collectgarbage('collect')
+    collectgarbage('collect')
+    assert.is_nil(weak[1])
+    local again = chain(50, H.Rectangle(0, 0, 10, 6))
+    assert.equals(60, again:getArea())
   end)
 
   it('draws every leaf', function()

@@ -96,6 +96,9 @@ local function isCollider(v) return type(v) == 'table' and getmetatable(v) ~= ni
 -- slot 0 names the collider), or of a member whose `_parent` does not hold it: a game's value
 -- in a field of strike's is an error naming the field (strike/reserved.lua).
 local function badShapes(self, fname)
+  -- (the error ends the walks under way, which it unwinds: they let go of what they held)
+  for k = #walk, 1, -1 do walk[k] = nil end
+  top = 0
   local reserved = require(ROOT .. '.reserved')
   reserved.check(fname, 'the ' .. (reserved.classType(self) or 'collider'), self)
   fail(('%s: the collider\'s fields starting with _ are not as strike left them; %s'):format(fname, reserved.RULE))
