@@ -234,8 +234,8 @@ end
 
 ---------------------------------------------------------------------------------------
 
--- Case counts on LuaJIT and Lua 5.4 (a quarter on Lua 5.1-5.3, the rest of LuaJIT's past the first
--- 100 interpreted: spec/helpers/budget.lua).
+-- Case counts on LuaJIT (a quarter on Lua 5.1-5.4; LuaJIT's past the first 30 interpreted:
+-- spec/helpers/budget.lua).
 local COUNT = {
   convex = 2000,
   concave = 2000,

@@ -15,7 +15,7 @@ local abs, sqrt, cos, sin, pi, max = math.abs, math.sqrt, math.cos, math.sin, ma
 local unpack = table.unpack or unpack -- luacheck: ignore 113 143
 
 local SEED = PRNG.seedFromEnv(20261124)
-local CASES = budget.cases(3000) -- (a quarter on Lua 5.1-5.3: spec/helpers/budget.lua)
+local CASES = budget.cases(3000) -- (a quarter on Lua 5.1-5.4: spec/helpers/budget.lua)
 
 -- The oracle's record of a shape: brute.of plus the rounding radius of a rounded shape.
 local function record(s)
