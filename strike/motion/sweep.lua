@@ -31,7 +31,7 @@ local MTV = require(ROOT .. '.collide.MTV')
 local args = require(ROOT .. '.collide.args')
 local check = require(ROOT .. '.check')
 local limits = require(ROOT .. '.limits')
-local checkReach, CENTROID_REACH, ROUND = limits.checkReach, limits.CENTROID_REACH, limits.ROUND
+local checkReach, ROUND = limits.checkReach, limits.ROUND
 
 local COUNT, DIRTY, X, Y, R = layout.COUNT, layout.DIRTY, layout.X, layout.Y, layout.R
 local STRIDE, VY, NX, NY, D = layout.STRIDE, layout.VY, layout.NX, layout.NY, layout.D
@@ -350,14 +350,9 @@ function sweep.weep(a, dx, dy, b, angle, out)
     fail(('%s: argument 6 (out) must be a plain table for the hit (a previous hit, or {}), got %s')
       :format(FNAME, check.what(out)))
   end
-  do -- (the range of motion, limits.lua, tested inline)
+  do -- (the range of motion: limits.lua)
     local x, y = a:getCentroid()
-    local r = a:getRadius()
-    local lim, x1, y1 = CENTROID_REACH * r, x + dx, y + dy
-    if not (x <= lim and -x <= lim and y <= lim and -y <= lim and x1 <= lim and -x1 <= lim and y1 <= lim
-      and -y1 <= lim) then
-      checkReach(FNAME, r, x, y, x1, y1)
-    end
+    checkReach(FNAME, a:getRadius(), x, y, x + dx, y + dy)
   end
   local ra = a._parent and root(a) or a
   local rb = b._parent and root(b) or b

@@ -336,14 +336,9 @@ function Space:cast(body, dx, dy, filterArg, out)
     fail(('%s: argument 5 (out) must be a plain table for the hit (a previous hit, or {}), got %s'):format(F,
       what(out)))
   end
-  do -- (the range of motion, limits.lua, tested inline)
+  do -- (the range of motion: limits.lua)
     local x, y = body:getCentroid()
-    local r = body:getRadius()
-    local lim, x1, y1 = CENTROID_REACH * r, x + dx, y + dy
-    if not (x <= lim and -x <= lim and y <= lim and -y <= lim and x1 <= lim and -x1 <= lim and y1 <= lim
-      and -y1 <= lim) then
-      checkReach(F, r, x, y, x1, y1)
-    end
+    checkReach(F, body:getRadius(), x, y, x + dx, y + dy)
   end
   out = out or {}
   local game = type(filterArg) == 'function' or self._pairFilter and ownId(self, F, body) and true or false
