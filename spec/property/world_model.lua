@@ -999,6 +999,16 @@ function P:queryFilter(pure, subject)
 end
 
 -- After a query: a filter that is no longer anybody's must not be kept by the space.
+-- fn(...) with `body` counted as the subject of a query in progress (self.probes) while it
+-- runs; returns what fn returns (fn must not raise: a pcall or P:attempt).
+function P:probing(body, fn, ...)
+  local probes = self.probes
+  probes[body] = (probes[body] or 0) + 1
+  local r = pack(fn(...))
+  probes[body] = probes[body] > 1 and probes[body] - 1 or nil
+  return unpack(r, 1, r.n)
+end
+
 function P:release(qf)
   if qf and type(qf.filter) == 'function' then self.deadFns[qf.filter] = 'the query filter ' .. qf.desc end
 end
@@ -1175,9 +1185,8 @@ function Q.queryShape(self, target, X)
   local out, ohow = self:outFor('queryShape')
   local what = self:fmt('queryShape(%s %s, %s, %s)', how, q, qf.desc, ohow)
   self:log(what)
-  self.probes[q] = (self.probes[q] or 0) + 1
-  local ok, f, got, n = pcall(self.within, self, 'queryShape', self.space.queryShape, self.space, q, qf.filter, out)
-  self.probes[q] = self.probes[q] > 1 and self.probes[q] - 1 or nil
+  local ok, f, got, n = self:probing(q, pcall, self.within, self, 'queryShape', self.space.queryShape, self.space, q,
+    qf.filter, out)
   self:release(qf)
   if not ok then error(f, 0) end
   self:listEnd(what, got, n, out)
@@ -1212,9 +1221,8 @@ function Q.check(self, target, X)
   local out, ohow = self:outFor('check')
   local what = self:fmt('check(%s %s, %s, %s)', how, body, qf.desc, ohow)
   self:log(what)
-  self.probes[body] = (self.probes[body] or 0) + 1
-  local ok, f, got, n = pcall(self.within, self, 'check', self.space.check, self.space, body, qf.filter, out)
-  self.probes[body] = self.probes[body] > 1 and self.probes[body] - 1 or nil
+  local ok, f, got, n = self:probing(body, pcall, self.within, self, 'check', self.space.check, self.space, body,
+    qf.filter, out)
   self:release(qf)
   if not ok then error(f, 0) end
   self:listEnd(what, got, n, out)
@@ -1506,9 +1514,8 @@ function Q.cast(self, target, X)
   local out, ohow = self:outFor('cast')
   local what = self:fmt('cast(%s %s, %s, %s, %s, %s)', how, body, dx, dy, qf.desc, ohow)
   self:log(what)
-  self.probes[body] = (self.probes[body] or 0) + 1
-  local f, res = self:attempt('cast', self.space.cast, self.space, body, dx, dy, qf.filter, out)
-  self.probes[body] = self.probes[body] > 1 and self.probes[body] - 1 or nil
+  local f, res = self:probing(body, self.attempt, self, 'cast', self.space.cast, self.space, body, dx, dy, qf.filter,
+    out)
   self:release(qf)
   if oor then return self:rangeError(what, 'strike.Space:cast', f, res, body, cx, cy, qf.script) end
   if self:subjectMoved(what, 'strike.Space:cast', f, res, body) then return end
