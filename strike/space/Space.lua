@@ -68,8 +68,10 @@ function Space:new()
   -- candidates while only it moves (strike/space/motion.lua)
   self._version, self._mover = 0, 0
   -- the number of removals so far: a call whose game code (a filter, a callback) removed
-  -- bodies sees it change, and drops them from its results (see dropRemoved)
+  -- bodies sees it change, and drops them from its results (see dropRemoved); and, by body,
+  -- the number its last removal from this space made (weak: it keeps no body alive)
   self._removals = 0
+  self._gone = setmetatable({}, { __mode = 'k' })
   -- true while a call that runs game code is in progress at the top (see protect)
   self._guard = false
   -- contact tracking: records by pair key, the touching records of the last call (in
@@ -426,7 +428,8 @@ function Space:remove(body)
   self._group[id], self._sensor[id], self._queued[id] = false, false, false
   body._space, body._sid = false, nil
   self._n = self._n - 1
-  self._removals = self._removals + 1
+  local removals = self._removals + 1
+  self._removals, self._gone[body] = removals, removals
   return body
 end
 
@@ -932,13 +935,17 @@ local function present(self, b)
 end
 
 -- Drop from list[1..k] the bodies (or the records whose `field` names a body) that a
--- filter removed from the space during the call; returns the new count. Dropped records go
--- past it, where trimRecords keeps them as spares.
-local function dropRemoved(self, list, k, field)
+-- filter removed from the space during the call, which began when the space had made
+-- `removals` removals: a body removed and added again meanwhile too (it is not the body
+-- the call found, and has another rank); returns the new count. Dropped records go past
+-- it, where trimRecords keeps them as spares.
+local function dropRemoved(self, list, k, field, removals)
+  local gone = self._gone
   local j = 0
   for i = 1, k do
     local v = list[i]
-    if present(self, field and v[field] or v) then
+    local b = field and v[field] or v
+    if present(self, b) and (gone[b] or 0) <= removals then
       j = j + 1
       list[i], list[j] = list[j], v
     end
@@ -1035,7 +1042,7 @@ local function checkOf(self, body, filterArg, out)
       end
     end
     leave(self, level)
-    if self._removals ~= removals then k = dropRemoved(self, out, k, 'b') end
+    if self._removals ~= removals then k = dropRemoved(self, out, k, 'b', removals) end
   end
   trimRecords(out, k, '_check')
   return out, k
@@ -1084,7 +1091,7 @@ local function queryPointOf(self, x, y, filterArg, out)
     end
   end
   leave(self, level)
-  if self._removals ~= removals then k = dropRemoved(self, out, k) end
+  if self._removals ~= removals then k = dropRemoved(self, out, k, nil, removals) end
   trim(out, k)
   return out, k
 end
@@ -1125,7 +1132,7 @@ local function overlapping(self, level, probe, filterArg, out)
     end
   end
   leave(self, level)
-  if self._removals ~= removals then k = dropRemoved(self, out, k) end
+  if self._removals ~= removals then k = dropRemoved(self, out, k, nil, removals) end
   trim(out, k)
   return out, k
 end
@@ -1377,7 +1384,7 @@ local function rayCastAllOf(self, x, y, dx, dy, ux, uy, maxT, filterArg, out)
     end
   end
   leave(self, level)
-  if self._removals ~= removals then k = dropRemoved(self, out, k, 'body') end
+  if self._removals ~= removals then k = dropRemoved(self, out, k, 'body', removals) end
   trimRecords(out, k, '_rank')
   local sorted = true
   for j = 2, k do
