@@ -2,7 +2,7 @@
 # check, the LÖVE screenshot checks and the busted suite under every Lua VM.
 VMS ?= lua5.1 lua5.2 lua5.3 lua5.4 luajit
 
-.PHONY: test deps lint annotations annotations-fix spec copy-check rockspec-check love-check bench bench-space bench-move demo
+.PHONY: test deps lint annotations annotations-fix spec copy-check rockspec-check love-check bench bench-space bench-move bench-movers demo
 
 test: deps lint annotations copy-check rockspec-check love-check spec
 
@@ -74,6 +74,20 @@ MOVE_ARGS ?=
 bench-move:
 	@status=0; for vm in $(BENCH_VMS); do \
 	  echo "== bench/move.lua under $$vm"; $$vm bench/move.lua --save $(MOVE_ARGS) || status=1; echo; \
+	done; exit $$status
+
+# bench/movers.lua under each of BENCH_VMS in turn, LuaJIT with LÖVE's JIT limits and with its
+# stock ones: every body of a world of 2,000 and 10,000 boxes and capsules moved by space:move
+# every frame, beside bump's and slick's world:move (STRIKE_PEERS), with LuaJIT's trace flushes
+# during the timed frames; tables printed and saved to bench/results/movers-<vm>.csv.
+# MOVERS_ARGS="--n 2000 --frames 9" for a shorter run.
+MOVERS_ARGS ?=
+
+bench-movers:
+	@status=0; for vm in $(BENCH_VMS); do \
+	  for lim in $$(if [ "$$vm" = luajit ]; then echo love stock; else echo love; fi); do \
+	    echo "== bench/movers.lua under $$vm (--jit $$lim)"; $$vm bench/movers.lua --save --jit $$lim $(MOVERS_ARGS) || status=1; echo; \
+	  done; \
 	done; exit $$status
 
 # `make demo`: the interactive LÖVE demo (love demo) where LÖVE and a display are present;

@@ -18,6 +18,7 @@ function A.load(peers, folder)
   if not ok then return nil, lib end
   if type(lib) ~= 'table' or not lib.newWorld then return nil, path .. ' did not return bump' end
   bump = lib
+  A.lib = lib -- (bench/adapters/movers_bump.lua moves with it too)
   return true
 end
 

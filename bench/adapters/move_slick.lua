@@ -71,6 +71,7 @@ function A.load(peers, folder)
   if not ok then return nil, lib end
   if type(lib) ~= 'table' or not lib.newWorld then return nil, 'slick did not load' end
   slick = lib
+  A.lib = lib -- (bench/adapters/movers_slick.lua moves with it too)
   return true
 end
 
