@@ -280,6 +280,45 @@ describe('bench.broadphase.tree', function()
     run(SEED + 20, 1e9, -1e9, 800, 20)
   end)
 
+  it('keeps the proxies that never moved in a tree of their own, with their exact boxes', function()
+    -- (a wall's fat box, grown for moves it never makes, made every query near it walk its
+    -- ancestors; and small movers inserted among large resting boxes spoil both: bench/movers.lua)
+    local t = Tree.new()
+    for i = 1, 64 do t:insert(i * 10, 0, i * 10 + 4, 4) end -- resting: 1 .. 64
+    for i = 1, 8 do t:insert(i * 10, 100, i * 10 + 4, 104) end -- 65 .. 72: to be moved
+    for i = 69, 72 do t:update(i, (i - 64) * 10 + 1, 100, (i - 64) * 10 + 5, 104) end -- (before any query)
+    t:query(0, 0, 1, 1, {})
+    for i = 65, 68 do t:update(i, (i - 64) * 10 + 1, 100, (i - 64) * 10 + 5, 104) end -- (after one)
+    t:update(3, 30, 0, 34, 4) -- "moved" to where it was: still resting
+    local leaves = {}
+    t:eachNode(function(_, x0, y0, x1, y1, _, leaf, moving)
+      if leaf then leaves[#leaves + 1] = { x0, y0, x1, y1, moving } end
+    end)
+    assert.are.equal(72, #leaves)
+    local resting, movers = 0, 0
+    for _, l in ipairs(leaves) do
+      if l[2] == 0 then -- a resting one: its leaf box is its exact box
+        resting = resting + 1
+        assert.is_false(l[5])
+        assert.are.same({ l[1], 0, l[1] + 4, 4 }, { l[1], l[2], l[3], l[4] })
+        assert.are.equal(0, l[1] % 10)
+      else -- a moved one: a fat box, strictly around its exact box
+        movers = movers + 1
+        assert.is_true(l[5])
+        assert(l[2] < 100 and l[4] > 104, 'a moved proxy keeps a fat box')
+      end
+    end
+    assert.are.equal(64, resting)
+    assert.are.equal(8, movers)
+    -- the height is the taller tree's, whichever it is
+    local depth = t:depth()
+    assert(depth >= 6, 'depth ' .. depth .. ' for 64 resting proxies')
+    for i = 1, 64 do t:remove(i) end
+    assert(t:depth() >= 3, "depth " .. t:depth() .. " for 8 moved proxies") -- (at least 3 levels)
+    local out = {}
+    assert.are.equal(8, t:query(0, 0, 1000, 1000, out))
+  end)
+
   it('stays shallow under churn (AVL-like rotations)', function()
     local t, rng, ids = Tree.new(), PRNG.new(SEED + 30), {}
     for i = 1, 1024 do -- sorted inserts: the worst case without rebalancing

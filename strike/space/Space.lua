@@ -1433,8 +1433,8 @@ Space._internals = {
 
 ------------------------------------------------------------------ drawing support
 
---- Visit the broadphase's boxes: fn(ctx, minx, miny, maxx, maxy, depth, isLeaf) for every
---- node of its tree (leaves: the bodies' fat boxes). For S.howSpace and tests.
+--- Visit the broadphase's boxes: fn(ctx, minx, miny, maxx, maxy, depth, isLeaf, moving) for every
+--- node of its two trees (Tree:eachNode). For S.howSpace and tests.
 ---@param fn function
 ---@param ctx any
 function Space:_eachNode(fn, ctx)

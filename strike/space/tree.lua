@@ -7,13 +7,22 @@
 --- code taken):
 --- * A binary tree whose leaves hold one proxy each, stored in flat number arrays indexed
 ---   by node (parent, two children, height, box, proxy id) with a free list of nodes.
---- * Each leaf holds a fat box: the proxy's exact box grown by a margin of (w + h) / 4 on
+--- * Each leaf of a proxy that moved holds a fat box: the proxy's exact box grown by a margin of (w + h) / 4 on
 ---   every side (4-14 px for 8-28 px bodies, 0.5 px for a 1 px bullet, about 500 px for a
 ---   2,000 px platform, nothing for a point), then stretched ahead along the last
 ---   displacement by 4 times that displacement, at most 32 (w + h) per axis (so a teleport
 ---   does not leave a huge box behind). Margins scale with each box, so nothing depends on units
 ---   or on the distance from the origin. Moving a box inside its fat box costs a few
 ---   comparisons; leaving it reinserts the leaf and puts the proxy in the move buffer.
+--- * Two trees in the same arrays: the leaves that have not moved since they were inserted
+---   (walls, level geometry) under `root`, with their exact boxes, and the others under
+---   `moving`, with fat boxes (as Box2D v3 keeps static and moving proxies in separate
+---   trees). A leaf's first move takes it from the first to the second. (In one tree, with
+---   fat boxes for all, the ancestors of a level's long walls, fattened for moves they never
+---   make, were walked by every query near them, and small movers inserted under them
+---   spoiled the tree as they moved: bench/movers.lua, 2,000 movers among 200 walls and
+---   four border walls, 138 nodes visited per mover's query after 5 frames and 190 after 35;
+---   57 and 72 with the two trees.) Queries, rays and pairs walk both.
 --- * Insertion walks down choosing the child whose enlarged perimeter, plus the growth it
 ---   causes in every ancestor, costs least (a surface-area heuristic in 2D, after Box2D
 ---   v2.4's InsertLeaf). On the way back up, every node tries the four swaps of a child with
@@ -61,8 +70,9 @@ local AVL_SLACK = 4
 local SHORT_SORT = 12
 --- A moved leaf is rotated by area this many levels above where it is inserted.
 local MOVED_LEVELS = 4
--- A proxy's pending tree work.
-local NONE, MOVED, NEW = 0, 1, 2
+-- A proxy's pending tree work: NEW and NEW_MOVED are not in the tree yet (NEW_MOVED: placed
+-- since its insert, so it joins the tree of moving proxies).
+local NONE, MOVED, NEW, NEW_MOVED = 0, 1, 2, 3
 
 --- A new, empty tree.
 ---@return table
@@ -72,12 +82,14 @@ function Tree.new()
     parent = {}, child1 = {}, child2 = {}, height = {}, proxyOf = {},
     -- fat boxes (unions of children for inner nodes); node 0's is infinite (see rotateArea)
     nx0 = { [0] = -huge }, ny0 = { [0] = -huge }, nx1 = { [0] = huge }, ny1 = { [0] = huge },
-    root = 0, nodeTop = 0, freeNode = 0,
+    -- two trees in these arrays: `root` holds the leaves that have not moved since they were
+    -- inserted (exact boxes: walls, floors, level geometry), `moving` the others (fat boxes)
+    root = 0, moving = 0, nodeTop = 0, freeNode = 0,
     -- proxies: leaf node (0 when free), exact box, and mark[id] == frame when the proxy is
     -- in the move buffer (its kept pairs are stale)
     leaf = {}, px0 = {}, py0 = {}, px1 = {}, py1 = {}, mark = {},
     fx0 = {}, fy0 = {}, fx1 = {}, fy1 = {}, -- the fat box the leaf has or will have
-    pending = {}, -- NONE, MOVED (the leaf's box is stale) or NEW (not in the tree yet)
+    pending = {}, -- NONE, MOVED (the leaf's box is stale), NEW or NEW_MOVED (not in the tree yet)
     idTop = 0, live = 0, frame = 1,
     -- changes whenever a leaf is inserted, removed or moved in the tree: a walk of it that
     -- calls out (rayVisit's visitor) can tell the tree changed meanwhile
@@ -170,6 +182,27 @@ local function freeNode(self, n)
   self.freeNode = n
 end
 
+-- Put the roots of the two trees that are not empty on the stack; returns its top.
+local function seed(self, stack)
+  local top, r = 0, self.root
+  if r ~= 0 then
+    top = 1
+    stack[1] = r
+  end
+  r = self.moving
+  if r ~= 0 then
+    top = top + 1
+    stack[top] = r
+  end
+  return top
+end
+
+-- Node `new` takes the place of `old` as the root of whichever of the two trees old is the
+-- root of.
+local function setRoot(self, old, new)
+  if self.root == old then self.root = new else self.moving = new end
+end
+
 -- Recompute an inner node's box and height from its children.
 --
 -- The functions that run on every level of the tree come in two spellings: with
@@ -226,7 +259,7 @@ local function rotateUp(self, a, c)
   local p = parent[a]
   parent[c] = p
   if p == 0 then
-    self.root = c
+    setRoot(self, a, c)
   elseif c1[p] == a then
     c1[p] = c
   else
@@ -369,11 +402,10 @@ end
 -- (Two spellings: see refit.)
 local findSibling
 if JIT then
-  findSibling = function(self, leaf)
+  findSibling = function(self, leaf, n)
     local c1, c2, h = self.child1, self.child2, self.height
     local x0, y0, x1, y1 = self.nx0, self.ny0, self.nx1, self.ny1
     local lx0, ly0, lx1, ly1 = x0[leaf], y0[leaf], x1[leaf], y1[leaf]
-    local n = self.root
     while c1[n] ~= 0 do -- (min(height, 1): 0 for a leaf, 1 for an inner node, no branch)
       local a, b = c1[n], c2[n]
       local combined = max(x1[n], lx1) - min(x0[n], lx0) + max(y1[n], ly1) - min(y0[n], ly0)
@@ -389,11 +421,10 @@ if JIT then
     return n
   end
 else
-  findSibling = function(self, leaf)
+  findSibling = function(self, leaf, n)
     local c1, c2 = self.child1, self.child2
     local x0, y0, x1, y1 = self.nx0, self.ny0, self.nx1, self.ny1
     local lx0, ly0, lx1, ly1 = x0[leaf], y0[leaf], x1[leaf], y1[leaf]
-    local n = self.root
     while c1[n] ~= 0 do -- (written out: no calls, for the interpreters)
       local a, b = c1[n], c2[n]
       local ux0, uy0, ux1, uy1 = x0[n], y0[n], x1[n], y1[n]
@@ -427,22 +458,24 @@ else
   end
 end
 
--- Put leaf into the tree, beside the sibling findSibling chooses, rotating by area on the
--- first `levels` levels above it (see fixUp).
-local function insertLeaf(self, leaf, levels)
-  if self.root == 0 then
-    self.root = leaf
+-- Put leaf into the tree of resting leaves, or with `moving` into the other, beside the
+-- sibling findSibling chooses, rotating by area on the first `levels` levels above it (see
+-- fixUp).
+local function insertLeaf(self, leaf, levels, moving)
+  local root = moving and self.moving or self.root
+  if root == 0 then
+    if moving then self.moving = leaf else self.root = leaf end
     self.parent[leaf] = 0
     return
   end
   local parent, c1, c2 = self.parent, self.child1, self.child2
-  local n = findSibling(self, leaf)
+  local n = findSibling(self, leaf, root)
   local old = parent[n]
   local p = newNode(self)
   parent[p], c1[p], c2[p] = old, n, leaf
   parent[n], parent[leaf] = p, p
   if old == 0 then
-    self.root = p
+    setRoot(self, n, p)
   elseif c1[old] == n then
     c1[old] = p
   else
@@ -452,20 +485,22 @@ local function insertLeaf(self, leaf, levels)
 end
 
 local function removeLeaf(self, leaf)
-  if leaf == self.root then
-    self.root = 0
+  if self.parent[leaf] == 0 then -- (the root of its tree)
+    setRoot(self, leaf, 0)
     return
   end
   local parent, c1, c2 = self.parent, self.child1, self.child2
   local p = parent[leaf]
   local g = parent[p]
   local sibling = c1[p] == leaf and c2[p] or c1[p]
-  freeNode(self, p)
-  parent[sibling] = g
   if g == 0 then
-    self.root = sibling
+    setRoot(self, p, sibling)
+    freeNode(self, p)
+    parent[sibling] = 0
     return
   end
+  freeNode(self, p)
+  parent[sibling] = g
   if c1[g] == p then c1[g] = sibling else c2[g] = sibling end
   fixUp(self, g, 0)
 end
@@ -481,8 +516,8 @@ local function findPairs(self, i, k)
   local x0, y0, x1, y1 = self.nx0, self.ny0, self.nx1, self.ny1
   local ka, kb = self.ka, self.kb
   local qx0, qy0, qx1, qy1 = x0[leaf], y0[leaf], x1[leaf], y1[leaf]
-  local stack, top = self.stack, 1
-  stack[1] = self.root
+  local stack = self.stack
+  local top = seed(self, stack)
   while top > 0 do
     local n = stack[top]
     top = top - 1
@@ -541,7 +576,7 @@ local function flush(self)
       -- 1,000 circles moving for 3,000 frames, Lua 5.4, counted in VM instructions: the
       -- tree's work per frame 468k all the way up, 394k at 4 levels, 359k at 2; the sum of
       -- the inner nodes' perimeters after it 196k, 201k and 225k)
-      insertLeaf(self, leaf, state == NEW and huge or MOVED_LEVELS)
+      insertLeaf(self, leaf, state == MOVED and MOVED_LEVELS or huge, state ~= NEW)
       pending[id] = NONE
     end
   end
@@ -631,7 +666,7 @@ function Tree:insert(minx, miny, maxx, maxy)
   self.px0[id], self.py0[id], self.px1[id], self.py1[id] = minx, miny, maxx, maxy
   local leaf = newNode(self)
   self.leaf[id], self.proxyOf[leaf] = leaf, id
-  fatten(self, id, minx, miny, maxx, maxy, 0, 0)
+  self.fx0[id], self.fy0[id], self.fx1[id], self.fy1[id] = minx, miny, maxx, maxy
   self.pending[id] = NEW
   local k = self.nStale + 1
   self.nStale, self.stale[k] = k, id
@@ -669,10 +704,13 @@ function Tree:place(id, minx, miny, maxx, maxy)
   end
   fatten(self, id, minx, miny, maxx, maxy, dx, dy)
   local pending = self.pending
-  if pending[id] == NONE then
+  local state = pending[id]
+  if state == NONE then
     pending[id] = MOVED
     local k = self.nStale + 1
     self.nStale, self.stale[k] = k, id
+  elseif state == NEW then
+    pending[id] = NEW_MOVED
   end
   pushMoved(self, id)
 end
@@ -683,7 +721,7 @@ function Tree:remove(id)
   local leaf = checkId(self, 'remove', id)
   pushMoved(self, id) -- (its kept pairs become stale)
   self.version = self.version + 1
-  if self.pending[id] ~= NEW then removeLeaf(self, leaf) end
+  if self.pending[id] < NEW then removeLeaf(self, leaf) end
   self.pending[id] = NONE
   freeNode(self, leaf)
   self.leaf[id] = 0
@@ -766,12 +804,12 @@ function Tree:query(minx, miny, maxx, maxy, out)
   checkBox('query', minx, miny, maxx, maxy)
   flush(self)
   local k = 0
-  if self.root ~= 0 then
+  local stack = self.stack
+  local top = seed(self, stack)
+  if top > 0 then
     local c1, c2, proxyOf = self.child1, self.child2, self.proxyOf
     local x0, y0, x1, y1 = self.nx0, self.ny0, self.nx1, self.ny1
     local px0, py0, px1, py1 = self.px0, self.py0, self.px1, self.py1
-    local stack, top = self.stack, 1
-    stack[1] = self.root
     while top > 0 do
       local n = stack[top]
       top = top - 1
@@ -858,10 +896,16 @@ end
 -- put a box's entry past a hit exactly on its side). One pad for the whole walk, from the
 -- root's box, which holds every box below it: at least each box's own.
 local function rayWalk(self, x, y, dx, dy)
-  local root = self.root
+  local x0, y0, x1, y1 = self.nx0, self.ny0, self.nx1, self.ny1
+  local m = 0
+  for r = 1, 2 do
+    local root = r == 1 and self.root or self.moving
+    if root ~= 0 then
+      m = max(m, 2 * max(abs(x0[root]), abs(x1[root])) + 2 * max(abs(y0[root]), abs(y1[root])))
+    end
+  end
   local ix, iy = 1 / dx, 1 / dy
-  local e = 1e-12 * (2 * max(abs(self.nx0[root]), abs(self.nx1[root])) + 2 * max(abs(self.ny0[root]),
-    abs(self.ny1[root])) + abs(x) + abs(y))
+  local e = 1e-12 * (m + abs(x) + abs(y))
   return ix, iy, ix == huge or ix == -huge, iy == huge or iy == -huge, e
 end
 
@@ -880,13 +924,13 @@ end
 ---@return integer
 function Tree:rayCandidates(x, y, dx, dy, maxT, ids, ts)
   flush(self)
-  if self.root == 0 then return 0 end
+  local stack, k = self.stack, 0
+  local top = seed(self, stack)
+  if top == 0 then return 0 end
   local c1, c2, proxyOf = self.child1, self.child2, self.proxyOf
   local x0, y0, x1, y1 = self.nx0, self.ny0, self.nx1, self.ny1
   local px0, py0, px1, py1 = self.px0, self.py0, self.px1, self.py1
   local ix, iy, zx, zy, e = rayWalk(self, x, y, dx, dy)
-  local stack, top, k = self.stack, 1, 0
-  stack[1] = self.root
   while top > 0 do
     local n = stack[top]
     top = top - 1
@@ -930,17 +974,28 @@ end
 ---@param tstack table|nil the walk's scratch, entry distances (the same)
 function Tree:rayVisit(x, y, dx, dy, maxT, visit, ctx, stack, tstack)
   flush(self)
-  local root = self.root
-  if root == 0 then return end
+  if self.root == 0 and self.moving == 0 then return end
   local c1, c2, proxyOf = self.child1, self.child2, self.proxyOf
   local x0, y0, x1, y1 = self.nx0, self.ny0, self.nx1, self.ny1
   local px0, py0, px1, py1 = self.px0, self.py0, self.px1, self.py1
   local ix, iy, zx, zy, e = rayWalk(self, x, y, dx, dy)
-  local t = entry(x0[root], y0[root], x1[root], y1[root], e, x, y, zx, zy, ix, iy, maxT)
-  if t < 0 then return end
-  local ts, top = tstack or self.tstack, 1
+  local ts, top = tstack or self.tstack, 0
   stack = stack or self.stack
-  stack[1], ts[1] = root, t
+  -- (the two roots, the nearer popped first; an empty tree's root, node 0, is not entered)
+  do
+    local ra, rb = self.root, self.moving
+    local ta = ra == 0 and -1 or entry(x0[ra], y0[ra], x1[ra], y1[ra], e, x, y, zx, zy, ix, iy, maxT)
+    local tb = rb == 0 and -1 or entry(x0[rb], y0[rb], x1[rb], y1[rb], e, x, y, zx, zy, ix, iy, maxT)
+    if ta > tb then ra, rb, ta, tb = rb, ra, tb, ta end
+    if tb >= 0 then
+      top = top + 1
+      stack[top], ts[top] = rb, tb
+    end
+    if ta >= 0 then
+      top = top + 1
+      stack[top], ts[top] = ra, ta
+    end
+  end
   while top > 0 do
     local n, tn = stack[top], ts[top]
     top = top - 1
@@ -977,13 +1032,14 @@ function Tree:rayVisit(x, y, dx, dy, maxT, visit, ctx, stack, tstack)
   end
 end
 
---- Visit every node: calls fn(ctx, minx, miny, maxx, maxy, depth, isLeaf) for each (fat boxes
---- of leaves; unions of inner nodes), for drawing and tests.
----@param fn fun(ctx: any, minx: number, miny: number, maxx: number, maxy: number, depth: integer, leaf: boolean)
+--- Visit every node: calls fn(ctx, minx, miny, maxx, maxy, depth, isLeaf, moving) for each
+--- (fat boxes of leaves; unions of inner nodes), for drawing and tests: the tree of the
+--- proxies that have not moved since they were inserted first (moving false), then the
+--- other (moving true), each from its root at depth 0.
+---@param fn fun(ctx, minx, miny, maxx, maxy, depth, leaf, moving)
 ---@param ctx any
 function Tree:eachNode(fn, ctx)
   flush(self)
-  if self.root == 0 then return end
   local c1, c2 = self.child1, self.child2
   local x0, y0, x1, y1 = self.nx0, self.ny0, self.nx1, self.ny1
   local depths = self.depths
@@ -991,17 +1047,22 @@ function Tree:eachNode(fn, ctx)
     depths = {}
     self.depths = depths
   end
-  local stack, top = self.stack, 1
-  stack[1], depths[1] = self.root, 0
-  while top > 0 do
-    local n, d = stack[top], depths[top]
-    top = top - 1
-    local a = c1[n]
-    fn(ctx, x0[n], y0[n], x1[n], y1[n], d, a == 0)
-    if a ~= 0 then
-      stack[top + 1], depths[top + 1] = a, d + 1
-      stack[top + 2], depths[top + 2] = c2[n], d + 1
-      top = top + 2
+  local stack = self.stack
+  for r = 1, 2 do
+    local moving = r == 2
+    local top = 1
+    stack[1], depths[1] = moving and self.moving or self.root, 0
+    if stack[1] == 0 then top = 0 end
+    while top > 0 do
+      local n, d = stack[top], depths[top]
+      top = top - 1
+      local a = c1[n]
+      fn(ctx, x0[n], y0[n], x1[n], y1[n], d, a == 0, moving)
+      if a ~= 0 then
+        stack[top + 1], depths[top + 1] = a, d + 1
+        stack[top + 2], depths[top + 2] = c2[n], d + 1
+        top = top + 2
+      end
     end
   end
 end
@@ -1019,11 +1080,13 @@ function Tree:count()
   return self.live
 end
 
---- The tree's height (0 for one leaf, -1 when empty): for tests and measurements.
+--- The height of the taller of the two trees (0 for one leaf, -1 when both are empty): for
+--- tests and measurements.
 ---@return integer
 function Tree:depth()
   flush(self)
-  return self.root == 0 and -1 or self.height[self.root]
+  local a, b = self.root, self.moving
+  return max(a == 0 and -1 or self.height[a], b == 0 and -1 or self.height[b])
 end
 
 --- The number of candidate pairs (fat boxes overlapping) at the last call of pairs: for
