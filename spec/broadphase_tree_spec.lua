@@ -141,14 +141,16 @@ local function checkRay(tree, o, rng, cx, cy, side, seed)
 end
 
 -- Run a random world: `rounds` rounds of inserts, moves and removes, checking pairs after each
--- and a few queries and rays. Returns the tree's height at the end.
-local function run(seed, cx, cy, side, rounds)
+-- and a few queries and rays. Returns the tree's height at the end. With `bursts`, round r
+-- inserts bursts[r] boxes (when given) instead of 0-30: many at once build the tree of
+-- resting boxes again in bulk.
+local function run(seed, cx, cy, side, rounds, bursts)
   local rng = PRNG.new(seed)
   local tree, o = Tree.new(), newOracle()
   local ids, out = {}, {}
   local maxDepth = 0
-  for _ = 1, rounds do
-    for _ = 1, rng:int(0, 30) do
+  for round = 1, rounds do
+    for _ = 1, bursts and bursts[round] or rng:int(0, 30) do
       local x0, y0, x1, y1 = randomBox(rng, cx, cy, side)
       local id = tree:insert(x0, y0, x1, y1)
       assert(not o.live[id], 'a live id was given out again')
@@ -265,6 +267,74 @@ describe('bench.broadphase.tree', function()
       local bound = 3 * math.log(n + 2) / math.log(2) + 2
       assert(depth <= bound, ('tree too deep: %d for %d (seed %d)'):format(depth, n, SEED + s))
     end
+  end)
+
+  it('matches brute force when many boxes arrive at once (the tree built again in bulk)', function()
+    -- (400 into an empty tree; 300 into one of about 400 resting boxes, some moved away; 255
+    -- and 256, below and at the threshold, into one of about 950)
+    run(SEED + 40, -400, -300, 800, 6, { 400, 0, 300, 0, 255, 256 })
+    run(SEED + 41, 0, 0, -40, 4, { 300, 5, 280, 0 })
+  end)
+
+  it('builds the tree of resting boxes balanced, split at the median, when many arrive at once', function()
+    local t = Tree.new()
+    for i = 1, 1024 do t:insert(i * 10, 0, i * 10 + 5, 5) end
+    local out = {}
+    assert.are.equal(2, t:query(5000, 0, 5010, 5, out))
+    assert.are.same({ 500, 501 }, out)
+    assert.are.equal(1, t:rebuilds())
+    assert.are.equal(10, t:depth())
+    local halves = {}
+    t:eachNode(function(_, x0, _, x1, _, depth)
+      if depth == 1 then halves[#halves + 1] = { x0, x1 } end
+    end)
+    table.sort(halves, function(a, b) return a[1] < b[1] end)
+    assert.are.same({ { 10, 5125 }, { 5130, 10245 } }, halves) -- (512 boxes each side)
+    -- a column in shuffled order: split along y, the 500 lowest boxes on one side
+    local c, rng, order = Tree.new(), PRNG.new(SEED + 42), {}
+    for i = 1, 1000 do order[i] = i end
+    for i = 1000, 2, -1 do
+      local j = rng:int(1, i)
+      order[i], order[j] = order[j], order[i]
+    end
+    for i = 1, 1000 do c:insert(3, order[i] * 10, 8, order[i] * 10 + 5) end
+    local ys = {}
+    c:eachNode(function(_, _, y0, _, y1, depth)
+      if depth == 1 then ys[#ys + 1] = { y0, y1 } end
+    end)
+    table.sort(ys, function(a, b) return a[1] < b[1] end)
+    assert.are.same({ { 10, 5005 }, { 5010, 10005 } }, ys, 'seed ' .. SEED + 42)
+    -- built again: its inner nodes reused, none lost
+    for i = 1, 1024 do t:insert(i * 10, 20, i * 10 + 5, 25) end
+    t:query(0, 0, 1, 1, out)
+    assert.are.equal(2, t:rebuilds())
+    assert.are.equal(2048 + 2047, t.nodeTop)
+  end)
+
+  it('builds in bulk from BULK new boxes, and only when they are at least half as many as the resting ones', function()
+    local t, out = Tree.new(), {}
+    local function add(n)
+      for _ = 1, n do t:insert(0, 0, 1, 1) end
+      t:query(0, 0, 1, 1, out)
+    end
+    add(255)
+    assert.are.equal(0, t:rebuilds()) -- (one by one)
+    t = Tree.new()
+    add(256)
+    assert.are.equal(1, t:rebuilds())
+    add(300) -- (556 resting)
+    assert.are.equal(2, t:rebuilds())
+    add(277) -- 554 < 556
+    assert.are.equal(2, t:rebuilds())
+    t:remove(1)
+    t:remove(2)
+    t:update(3, 5, 5, 6, 6) -- (to the tree of moving boxes: 830 resting)
+    add(414) -- 828 < 830
+    assert.are.equal(2, t:rebuilds())
+    t:remove(4)
+    t:remove(5)
+    add(621) -- 1,242 >= 1,242
+    assert.are.equal(3, t:rebuilds())
   end)
 
   it('matches brute force on a dense world (most boxes overlap)', function()
