@@ -114,7 +114,7 @@ local function addTileParts(parts, P, tile, tw, th, rec, where)
     local own = properties(child.properties, cwhere)
     if own.collidable ~= false and (kind ~= 'text' or own.collidable == true) then
       local r = inherit(own, rec)
-      shapes.add(parts, child, kind, compose(P, frame(child, cwhere)), r.oneway == true, cwhere)
+      protected(cwhere, shapes.add, parts, child, kind, compose(P, frame(child, cwhere)), r.oneway == true, cwhere)
     end
   end
 end

@@ -69,8 +69,8 @@ local number = M.number
 ---@return number
 function M.whole(v, where, field, lo, hi)
   if type(v) ~= 'number' or v - v ~= 0 or v % 1 ~= 0 or v < lo or v > hi then
-    fail(where, ('%s must be a whole number from %s to %s, got %s'):format(field, describe(lo), describe(hi),
-      describe(v)))
+    -- (the bounds as whole numbers on every VM: 2^32 - 1 is a float on Lua 5.3+)
+    fail(where, ('%s must be a whole number from %.0f to %.0f, got %s'):format(field, lo, hi, describe(v)))
   end
   return v
 end

@@ -124,9 +124,11 @@ local function endRow(self)
   self.pn, self.prow, self.cn = cn, self.crow, 0
 end
 
---- Start row r (rows in increasing order; a row skipped is a row without solid tiles).
+--- Start row r (rows in increasing order; a row skipped is a row without solid tiles). The
+--- current row again goes on with it (its next chunk).
 ---@param r integer
 function Builder:row(r)
+  if r == self.crow then return end
   endRow(self)
   self.crow = r
 end
