@@ -522,6 +522,36 @@ describe('S.tiled tile layers: what is loaded', function()
     assert.equals(1, #S.tiled(m, S.pace(), { layers = { 'plain' } }).bodies)
   end)
 
+  it('a tile whose collision group is empty is its box; one whose shapes all say collidable = false is nothing',
+    function()
+      local ts = T.tileset(1, 16, { { id = 1, objectGroup = T.objects('', {}) }, { id = 2, objectGroup = T.objects('', {
+        T.object('rectangle', { width = 4, height = 4, properties = { collidable = false } }) }) } })
+      local level = load({ '#a#b' }, { tilesets = { ts } })
+      assert.equals(1, #level.bodies)
+      assert.same({ 0, 0, 48, 16 }, { level.bodies[1]:getBounds() })
+    end)
+
+  it('image layers are skipped, in a named group too; hidden objects are loaded', function()
+    local m = T.map({ tilesets = { T.tileset(1, 4) } })
+    m.layers = { T.group('all', { { type = 'imagelayer', name = 'sky', image = 'sky.png', properties = {} },
+      T.objects('things', { T.object('point', { x = 1, y = 2, visible = false }) }) }) }
+    local level = S.tiled(m, S.pace(), { layers = { 'all' } })
+    assert.equals(1, #level.bodies)
+  end)
+
+  it('group layers may nest 200 deep (201 is an error: spec/tiled_errors_spec.lua)', function()
+    local m = T.map({ tilesets = { T.tileset(1, 4) } })
+    local g = T.group('g', {})
+    m.layers = { g }
+    for _ = 1, 200 do
+      local inner = T.group('g', {})
+      g.layers[1] = inner
+      g = inner
+    end
+    g.layers[1] = T.tiles('deep', 1, 1, { 1 }, { collidable = true })
+    assert.equals(1, #S.tiled(m, S.pace()).bodies)
+  end)
+
   it('the same map as JSON decodes it gives the same bodies', function()
     local ts = T.tileset(1, 16, { { id = 1, properties = { layer = 'b' } }, { id = 2, objectGroup = T.objects('', {
       T.object('polygon', { polygon = T.points(0, 16, 16, 16, 16, 0) }) }) } })
