@@ -8,9 +8,11 @@
 #   BENCH_ARGS="--pairs 2000" bash bench/bench.sh  extra options for bench/run.lua
 #
 # Runs `bench/run.lua --save`, then `bench/move.lua --save` (space:move beside bump's and
-# slick's world:move), under each VM in turn (never in parallel, so that runs do not share the
-# CPUs), prints each VM's tables and writes bench/results/<vm>.csv and move-<vm>.csv. Progress
-# goes to stderr. Fails when a VM is missing or its run fails; the other VMs still run.
+# slick's world:move), then `bench/tiled.lua --save` (S.tiled loading a 200 x 200 map, 40 %
+# solid, with 1,000 objects), under each VM in turn (never in parallel, so that runs do not
+# share the CPUs), prints each VM's tables and writes bench/results/<vm>.csv, move-<vm>.csv
+# and tiled-<vm>.csv. Progress goes to stderr. Fails when a VM is missing or its run fails;
+# the other VMs still run.
 set -u
 cd "$(dirname "$0")/.." || exit 1
 if [ -n "${STRIKE_PEERS:-}" ]; then
@@ -28,7 +30,7 @@ for vm in ${BENCH_VMS:-luajit lua5.4}; do
   echo "== bench under $vm ($("$vm" -v 2>&1 | head -n 1))"
   t0=$(date +%s)
   # shellcheck disable=SC2086 # BENCH_ARGS is a list of options
-  if "$vm" bench/run.lua --save ${BENCH_ARGS:-} && "$vm" bench/move.lua --save; then
+  if "$vm" bench/run.lua --save ${BENCH_ARGS:-} && "$vm" bench/move.lua --save && "$vm" bench/tiled.lua --save; then
     ran+=("$vm")
     echo "== $vm: $(( $(date +%s) - t0 )) s"
   else
