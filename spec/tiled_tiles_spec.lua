@@ -261,6 +261,43 @@ describe('S.tiled tile layers: a region is one solid', function()
   end)
 end)
 
+describe('S.tiled tile layers: the alternatives to rectangles with seams, and where they fall short', function()
+  -- the region of an L of tiles: rows 0-1, a 3-tile bar over a 1-tile stem
+  local level = load({ '###', '#..' })
+  local body = level.bodies[1]
+
+  it('S.tiled\'s region: inside on the face between its rectangles, a ray from inside leaves at its outline, and'
+    .. ' a point inside is pushed out', function()
+    assert.equals(2, body:getShapeCount())
+    assert.is_true(body:containsPoint(8, 16))
+    assert.near(8 + 16, body:rayCast(8, 8, 0, 1), 1e-12)
+    assert.is_truthy(S.triking(body, S.hapes.Point(8, 20)))
+  end)
+
+  it('plain rectangles (no seams): the face between them is outside both, and a ray from inside stops there',
+    function()
+      local plain = S.trikers.Collider(S.hapes.Rectangle(24, 8, 48, 16), S.hapes.Rectangle(8, 24, 16, 16))
+      assert.is_false(plain:containsPoint(8, 16))
+      assert.near(8, plain:rayCast(8, 8, 0, 1), 1e-12)
+    end)
+
+  it('a chain loop around the outline: a surface, not a solid (a point inside is not inside, nor pushed out)',
+    function()
+      local loop = S.trikers.Chain({ 0, 0, 48, 0, 48, 16, 16, 16, 16, 32, 0, 32 }, true)
+      assert.is_false(loop:containsPoint(8, 20))
+      assert.is_false(S.triking(loop, S.hapes.Point(8, 20)))
+      assert.is_false(S.triking(loop, S.trikers.Rectangle(8, 20, 4, 4)))
+    end)
+
+  it('one Concave per region: a region with a hole has no simple outline', function()
+    -- a ring of 8 tiles around a hole, its outline cut to the hole and back (a keyhole)
+    assert.has_error(function()
+      S.trikers.Concave(0, 0, 48, 0, 48, 48, 0, 48, 0, 16, 16, 16, 16, 32, 32, 32, 32, 16, 0, 16)
+    end)
+    assert.equals(1, #load({ '###', '#.#', '###' }).bodies)
+  end)
+end)
+
 describe('S.tiled tile layers: ghost-free walking', function()
   it('a box walks a floor of 1,000 tiles with space:move, pressed down each step, without a bump', function()
     local level, space = load({ ('#'):rep(1000) })
@@ -478,6 +515,15 @@ describe('S.tiled tile layers: what is loaded', function()
       group = 2, sensor = false })
     assert.same({ 'ground', { 'a', 'b' }, 2, false }, { space:get(level.bodies[1]) })
     assert.same({ 'ground', { 'player' }, 0, false }, { space:get(level.bodies[2]) })
+  end)
+
+  it('a mask of no names (an empty string, or commas and spaces) is no mask: every layer, over the layer\'s', function()
+    local ts = T.tileset(1, 16, { { id = 1, properties = { mask = '' } }, { id = 2, properties = { mask = ' , ' } },
+      { id = 3, properties = { mask = ' a ,, b c ' } } })
+    local level, space = load({ '#.a.b.c' }, { tilesets = { ts } }, { collidable = true, mask = 'x' })
+    local masks = {}
+    for i, b in ipairs(level.bodies) do masks[i] = select(2, space:get(b)) or 'every layer' end
+    assert.same({ { 'x' }, 'every layer', 'every layer', { 'a', 'b c' } }, masks)
   end)
 
   it('tiles collide by their tileset tile\'s collidable in a layer that is not collidable', function()

@@ -139,15 +139,18 @@ local function setProperty(rec, name, v, where)
   if not ok then
     fail(where, ('property %s must be %s, got %s'):format(name, WANT[kind], describe(v)))
   end
-  if name == 'mask' then v = names(v) end
+  if name == 'mask' then
+    v = names(v)
+    if #v == 0 then v = false end -- (no names: no mask, every layer, as space:add's mask = false)
+  end
   rec[name] = v
 end
 
 --- The properties strike.tiled reads from a `properties` table in either shape (Lua export:
 --- name = value; JSON: a list of {name =, type =, value =}): a record with the fields
 --- collidable, sensor, oneway (booleans), layer (a string), mask (a list of names, from the
---- comma-separated string) and group (a whole number), each nil when not given. Other
---- properties are the game's and are not read.
+--- comma-separated string; false for a string of no names: every layer) and group (a whole
+--- number), each nil when not given. Other properties are the game's and are not read.
 ---@param props any
 ---@param where string
 ---@return table
@@ -213,7 +216,7 @@ function M.options(rec)
     for i = 1, #mask do copy[i] = mask[i] end
     mask = copy
   end
-  return { layer = rec.layer, mask = mask, group = rec.group, sensor = rec.sensor }
+  return { layer = rec.layer, mask = mask, group = rec.group, sensor = rec.sensor } -- (mask false: every layer)
 end
 
 --- A key that tells two records' space options apart (equal keys: the same options).
