@@ -585,6 +585,15 @@ describe('S.tiled tile layers: what is loaded', function()
     assert.equals(1, #level.bodies)
   end)
 
+  it('a layer 0 wide and 2^31 tall, or 2^31 wide and 0 tall, has no cells: nothing, at once', function()
+    local m = T.map({ tilesets = { T.tileset(1, 4) } })
+    m.layers = { T.tiles('tall', 0, 2 ^ 31, {}, { collidable = true }),
+      T.tiles('wide', 2 ^ 31, 0, {}, { collidable = true }) }
+    local t0 = os.clock()
+    assert.equals(0, #S.tiled(m, S.pace()).bodies)
+    assert.is_true(os.clock() - t0 < 1)
+  end)
+
   it('group layers may nest 200 deep (201 is an error: spec/tiled_errors_spec.lua)', function()
     local m = T.map({ tilesets = { T.tileset(1, 4) } })
     local g = T.group('g', {})

@@ -205,6 +205,7 @@ local function fixedCells(layer, where)
     fail(where, ('data has %d gids; a %d by %d layer has %d'):format(#data, W, H, W * H))
   end
   local function cells(visit)
+    if W == 0 then return end -- (no cells, however many rows: a height of 2^31 is no loop)
     for r = 0, H - 1 do visit(r, 0, data, r * W, W) end
   end
   local function gidAt(c, r) return data[r * W + c + 1] end
