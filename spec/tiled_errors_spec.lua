@@ -174,6 +174,11 @@ describe('S.tiled errors', function()
       local o = m.layers[2].layers[1].objects[2]
       o.shape, o.polygon, o.polyline = 'polyline', nil, T.points(1, 1, 1, 1)
     end, 'object 2 (polyline): strike.Chain: a chain needs at least 2 distinct points, got 1' },
+    { 'an instance of a template, as JSON keeps it (only what it changes)', function(m)
+      local o = m.layers[2].layers[1].objects[1]
+      o.template, o.width, o.height = 'door.tx', nil, nil
+    end, 'object 1 "door" (rectangle): is an instance of the template "door.tx", whose shape is in that file;'
+      .. ' strike reads no files' },
     { 'an object id twice', function(m) m.layers[2].layers[1].objects[2].id = 1 end,
       'object 1 (polygon): object id 1 is used twice' },
     { 'an object id that is not a number', function(m) m.layers[2].layers[1].objects[2].id = 'two' end,

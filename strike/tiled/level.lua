@@ -148,6 +148,13 @@ local function loadObjects(entry, sets, out, tileRecs)
     local id = obj.id
     if id ~= nil then number(id, where, 'id') end
     local own = properties(obj.properties, where)
+    if type(obj.template) == 'string' and inherit(own, entry.rec).collidable == true then
+      -- (a JSON map keeps only what an instance of a template changes: the rest, its shape
+      -- included, is in the template's file; the Lua export writes every object whole)
+      fail(where, ('is an instance of the template %s, whose shape is in that file; strike reads no files: export'
+        .. ' the map as Lua, which writes the object whole, or detach it (Tiled: Detach Template)')
+        :format(map.quote(obj.template)))
+    end
     local rec, body
     if kind == 'tile' then
       local gid = map.gid(obj.gid, where)
