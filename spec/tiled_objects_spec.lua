@@ -399,6 +399,50 @@ describe('S.tiled objects: tile objects', function()
     assert.near(pi * 32 * 0.99359, stretched:getArea(), 0.01)
   end)
 
+  it('a turned collision rectangle turns about its own (x, y) in the tile, then flips and scales with it: a'
+    .. ' parallelogram when stretched unevenly', function()
+    local ts = T.tileset(1, 4, { { id = 0, objectGroup = T.objects('', {
+      T.object('rectangle', { x = 4, y = 5, width = 8, height = 4, rotation = 30 }) }) } })
+    for _, case in ipairs({ { 16, 16, false }, { 32, 32, true }, { 32, 16, true }, { 24, 40, false } }) do
+      local w, h, fh = case[1], case[2], case[3]
+      local o = T.object(nil, { gid = 1 + (fh and T.H or 0), x = 50, y = 60, width = w, height = h, rotation = -15 })
+      local body = one(o, { tilesets = { ts } })
+      local want = {}
+      for _, p in ipairs({ { 4, 5 }, { 12, 5 }, { 12, 9 }, { 4, 9 } }) do
+        local u, v = T.rotate(p[1], p[2], 30, 4, 5)
+        want[#want + 1] = { place(u, v, 16, 16, o, fh, false, false) }
+      end
+      T.sameVertices(T.vertices(body), want, 1e-9, ('%g x %g'):format(w, h))
+    end
+  end)
+
+  it('a collision capsule stays a capsule under a uniform scale; stretched unevenly, a polygon through its outline',
+    function()
+      local ts = T.tileset(1, 4, { { id = 0, objectGroup = T.objects('', {
+        T.object('capsule', { x = 2, y = 4, width = 12, height = 6 }) }) } })
+      local even = leaves(one(T.object(nil, { gid = 1, x = 0, y = 32, width = 32, height = 32 }),
+        { tilesets = { ts } }))[1]
+      assert.equals('rounded', even:getKind())
+      assert.near(6, even:getRounding(), 1e-12)
+      local s = leaves(one(T.object(nil, { gid = 1, x = 0, y = 16, width = 32, height = 16 }),
+        { tilesets = { ts } }))[1]
+      assert.equals('polygon', s:getKind())
+      -- its box is the capsule's box stretched: x doubled
+      local x0, y0, x1, y1 = s:getBounds()
+      assert.near(4, x0, 1e-12)
+      assert.near(28, x1, 1e-12)
+      assert.near(4, y0, 1e-12)
+      assert.near(10, y1, 1e-12)
+      -- every vertex on the stretched outline: in the tile's coordinates, on a cap's arc or a side
+      for i = 1, s:getVertexCount() do
+        local x, y = s:getVertex(i)
+        local u, v = x / 2, y -- (back in the tile)
+        local cx = math.max(5, math.min(11, u))
+        assert.near(3, math.sqrt((u - cx) ^ 2 + (v - 7) ^ 2), 1e-9)
+      end
+      assert.near(2 * (6 * 6 + math.pi * 9), s:getArea(), 0.05 * 2 * (6 * 6 + math.pi * 9))
+    end)
+
   it('a one-way collision line of a flipped tile keeps its solid side where the flipped tile shows it', function()
     local ts = T.tileset(1, 4, { { id = 0, objectGroup = T.objects('', {
       T.object('polyline', { x = 0, y = 8, polyline = T.points(0, 0, 16, 0), properties = { oneway = true } }) }) } })
