@@ -45,7 +45,7 @@ local M = {}
 --- The number of segments of an ellipse's polygon: 32 inscribed segments, whose area is
 --- 32 sin(2 pi / 32) / (2 pi) = 0.9936 of the ellipse's (an affine image of a regular polygon
 --- keeps that ratio), with the four extreme points on the ellipse: its bounding box is
---- exactly the object's.
+--- the object's (to rounding).
 M.ELLIPSE_SEGMENTS = 32
 local N = M.ELLIPSE_SEGMENTS
 -- and a capsule's polygon (only when a tile's non-uniform scale stretches one): per cap
