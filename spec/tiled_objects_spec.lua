@@ -240,6 +240,31 @@ describe('S.tiled objects: polylines', function()
     assert.near(1, S.triking(ceiling, S.trikers.Rectangle(50, 105, 20, 20)).ny, 1e-12)
   end)
 
+  it('a two-sided polyline of 20 segments has no ghost bumps at its joints, from above or below', function()
+    local pts = {}
+    for k = 0, 20 do pts[#pts + 1] = { x = 16 * k, y = 0 } end
+    local long = one(T.object('polyline', { x = 0, y = 100, polyline = pts }))
+    for x = 8, 312, 1 do
+      for _, side in ipairs({ -1, 1 }) do
+        local m = S.triking(long, S.trikers.Rectangle(x, 100 + side * 4.5, 8, 10))
+        assert.is_truthy(m)
+        assert.near(0, m.nx, 1e-12)
+        assert.near(side, m.ny, 1e-12)
+        assert.near(0.5, m.depth, 1e-9)
+      end
+    end
+    local level, space = load({ T.object('polyline', { x = 0, y = 100, polyline = pts }) })
+    assert.equals(1, #level.bodies)
+    local box = space:add(S.trikers.Rectangle(8, 90, 8, 10))
+    local x0, y0 = space:move(box, 8, 120)
+    while x0 < 300 do
+      local ax, ay = space:move(box, x0 + 3, y0 + 2)
+      assert.near(x0 + 3, ax, 1e-9)
+      assert.equals(y0, ay)
+      x0 = ax
+    end
+  end)
+
   it('oneway from the layer, and an object\'s own oneway = false over it', function()
     local level = load({ line(), line({ oneway = false }) }, nil, { collidable = true, oneway = true })
     assert.equals(1, level.bodies[1]:getShapeCount())
