@@ -47,8 +47,9 @@ copy-check:
 rockspec-check:
 	@bash tools/rockspec-check.sh $(VMS)
 
-# Benchmarks, not part of test: bench/run.lua under each of BENCH_VMS, tables printed and
-# saved to bench/results/<vm>.csv. STRIKE_PEERS=/path/to/peers adds the peers found there.
+# Benchmarks, not part of test: bench/run.lua, bench/move.lua and bench/tiled.lua (S.tiled's
+# load time) under each of BENCH_VMS, tables printed and saved to bench/results/<vm>.csv,
+# move-<vm>.csv and tiled-<vm>.csv. STRIKE_PEERS=/path/to/peers adds the peers found there.
 BENCH_VMS ?= luajit lua5.4
 
 bench:

@@ -84,6 +84,10 @@ build = {
       ["strike.space.motion"] = "strike/space/motion.lua",
       ["strike.space.tree"] = "strike/space/tree.lua",
       ["strike.shapes.RegularPolygon"] = "strike/shapes/RegularPolygon.lua",
+      ["strike.tiled.level"] = "strike/tiled/level.lua",
+      ["strike.tiled.map"] = "strike/tiled/map.lua",
+      ["strike.tiled.merge"] = "strike/tiled/merge.lua",
+      ["strike.tiled.shapes"] = "strike/tiled/shapes.lua",
       ["strike.vec"] = "strike/vec.lua",
    },
 }

@@ -288,4 +288,63 @@ function W.bodies(count, seed)
   return list
 end
 
+--- A Tiled map in the table shape of Tiled's Lua export, for S.tiled's load time: a
+--- size x size tile layer of 16 px tiles (collidable) in which each cell holds a solid tile
+--- with probability `density`, two tiles of the tileset alternating (the regions mix them),
+--- and an object layer (collidable) of `objects` objects spread over the map: a fifth each
+--- rectangles (a third of them rotated), ellipses (half of them round), convex and concave
+--- polygons, and polylines and points (a tenth each), with random sizes of 8-40 px.
+---@param size integer @param density number @param objects integer @param seed integer
+---@return table map
+function W.tiledMap(size, density, objects, seed)
+  local rng = PRNG.new(seed)
+  local data = {}
+  for i = 1, size * size do
+    data[i] = rng:next() < density and (i % 2 + 1) or 0
+  end
+  local span = size * 16
+  local objs = {}
+  for i = 1, objects do
+    local x, y, w, h = rng:range(0, span), rng:range(0, span), rng:range(8, 40), rng:range(8, 40)
+    local kind = (i - 1) % 10
+    local o = { id = i, name = '', type = '', x = x, y = y, width = 0, height = 0, rotation = 0, visible = true,
+      properties = {} }
+    if kind <= 1 then
+      o.shape, o.width, o.height = 'rectangle', w, h
+      if kind == 1 and i % 3 == 0 then o.rotation = rng:range(0, 360) end
+    elseif kind <= 3 then
+      o.shape, o.width, o.height = 'ellipse', w, kind == 2 and w or h
+    elseif kind <= 5 then
+      o.shape = 'polygon'
+      local n = rng:int(3, 8)
+      local pts = {}
+      for k = 1, n do
+        local a = 2 * pi * (k - 1) / n
+        local r = kind == 4 and w or (k % 2 == 0 and w or w / 2)
+        pts[k] = { x = r * math.cos(a), y = r * math.sin(a) }
+      end
+      o.polygon = pts
+    elseif kind <= 7 then
+      o.shape = 'polyline'
+      o.polyline = { { x = 0, y = 0 }, { x = w, y = 0 }, { x = w + h, y = h / 2 } }
+    else
+      o.shape = 'point'
+    end
+    objs[i] = o
+  end
+  return {
+    version = '1.10', luaversion = '5.1', orientation = 'orthogonal', renderorder = 'right-down',
+    width = size, height = size, tilewidth = 16, tileheight = 16, nextlayerid = 3, nextobjectid = objects + 1,
+    properties = {},
+    tilesets = { { name = 'ground', firstgid = 1, tilewidth = 16, tileheight = 16, spacing = 0, margin = 0,
+      columns = 2, tileoffset = { x = 0, y = 0 }, properties = {}, tilecount = 2, tiles = {} } },
+    layers = {
+      { type = 'tilelayer', x = 0, y = 0, width = size, height = size, id = 1, name = 'ground', visible = true,
+        opacity = 1, offsetx = 0, offsety = 0, properties = { collidable = true }, encoding = 'lua', data = data },
+      { type = 'objectgroup', draworder = 'topdown', id = 2, name = 'objects', visible = true, opacity = 1,
+        offsetx = 0, offsety = 0, properties = { collidable = true }, objects = objs },
+    },
+  }
+end
+
 return W

@@ -581,3 +581,72 @@ describe('demo scenes: R', function()
     end)
   end
 end)
+
+describe('demo scene: tiled level', function()
+  local scene = sceneNamed('Tiled level')
+  local map = require('demo.maps.level')
+
+  it('loads demo/maps/level.lua, a map in the shape of Tiled\'s Lua export, through S.tiled', function()
+    assert.same({ '5.1', 'orthogonal', 'lua' }, { map.luaversion, map.orientation, map.layers[1].encoding })
+    local state = scene.new(S, W, H)
+    local level, space = state.level, state.space
+    assert.equals(26, #level.bodies)
+    -- the ground: one body of its 84 connected tiles (hill included), holes and all
+    local ground = level.bodies[3]
+    local o = level.objectOf[ground]
+    assert.same({ 'ground', 84, 9 }, { o.tile.properties.kind, o.tiles, ground:getShapeCount() })
+    assert.is_true(ground:containsPoint(4 * 32 + 16, 14 * 32 + 16))
+    assert.is_false(ground:containsPoint(4 * 32 + 16, 15 * 32 + 16)) -- (a hole)
+    assert.is_false(ground:containsPoint(4 * 32 + 16, 15 * 32)) -- (the hole's edge)
+    assert.is_true(ground:containsPoint(2 * 32 + 16, 15 * 32)) -- (the face between two of its rectangles)
+    -- six slopes, the three on the way down flipped: their high side on the left
+    local up, down = 0, 0
+    for _, b in ipairs(level.bodies) do
+      local t = level.objectOf[b]
+      if t.tile and t.tile.properties.kind == 'slope' then
+        local x0, y0, x1 = b:getBounds()
+        if b:containsPoint(x1 - 2, y0 + 4) then up = up + 1 end
+        if b:containsPoint(x0 + 2, y0 + 4) then down = down + 1 end
+      end
+    end
+    assert.same({ 3, 3 }, { up, down })
+    -- coins: sensors on the layer 'coin'
+    assert.equals(12, #state.coins)
+    for _, c in ipairs(state.coins) do
+      local layer, _, _, sensor = space:get(c)
+      assert.same({ 'coin', true }, { layer, sensor })
+    end
+    assert.is_true(state.grounded)
+  end)
+
+  it('walks the level with space:move: onto the one-way platform, over the hill, the boulder and the step, and back,'
+    .. ' never ending a step inside the level, picking up coins', function()
+    local state = scene.new(S, W, H)
+    local names = {}
+    for _, b in ipairs(state.level.bodies) do
+      local o = state.level.objectOf[b]
+      names[b] = o.tiles and (o.tile and o.tile.properties.kind) or o.name
+    end
+    local stood, right, back = {}, false, false
+    for i = 1, 1200 do
+      scene.step(state, scene.STEP)
+      local x = state.character:getCentroid()
+      local recs, n = state.space:check(state.character)
+      for k = 1, n do
+        assert.equals('platform', names[recs[k].b], ('step %d: inside %s'):format(i, tostring(names[recs[k].b])))
+      end
+      if state.ground then stood[names[state.ground]] = true end
+      if x >= 740 then right = true end
+      if right and x <= 40 then back = true end
+    end
+    assert.is_true(right and back)
+    for _, name in ipairs({ 'platform', 'slope', 'ground' }) do
+      assert.is_true(stood[name] == true, 'never stood on ' .. name)
+    end
+    assert.is_true(state.picked >= 8, state.picked .. ' coins')
+    local left = 0
+    for _, c in ipairs(state.coins) do if state.space:has(c) then left = left + 1 end end
+    assert.equals(12 - state.picked, left)
+    assert.matches('coins picked up: ' .. state.picked, scene.status(state)[1])
+  end)
+end)

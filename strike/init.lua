@@ -338,6 +338,18 @@ Space._ite = S.ite
 ---@return strike.Space
 function S.pace() return Space() end
 
+--- Load a Tiled map (Tiled's Lua export, or a JSON map decoded into the same tables) into a
+--- space: its collidable objects and tiles as bodies, a tile layer's full-square tiles merged
+--- into one body per connected region (strike/tiled/; README, "Levels from Tiled"). Returns
+--- the level: `bodies` (in map order), `byId[id]` (the body of the Tiled object with that
+--- id), `objectOf[body]` (the Tiled object, or for tiles {layer =, tile =, ...}) and
+--- `remove()`. Bad input is an error naming the layer and object, and adds nothing.
+---@param map table
+---@param space strike.Space
+---@param opts table|nil {layers = {names}}: layers to load as collidable
+---@return strike.Level
+function S.tiled(map, space, opts) return require(ROOT .. '.tiled.level').load(map, space, opts) end
+
 -- LÖVE debug drawing, in strike/draw.lua, the only file that reads `love`; it is loaded on
 -- the first call, so strike works without LÖVE. Each restores the colour it found.
 local function drawing() return require(ROOT .. '.draw') end

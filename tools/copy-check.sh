@@ -16,6 +16,11 @@ for vm in "$@"; do
       assert(m and math.abs(m.x - 1) < 1e-12, 'wrong collision')
       for name in pairs(package.loaded) do assert(not name:match('^strike'), 'loaded ' .. name) end
       assert(S.trikers.Concave(0,0, 20,0, 20,10, 10,10, 10,20, 0,20):getShapeCount() == 2)
+      local level = S.tiled({ tilewidth = 16, tileheight = 16, tilesets = {}, layers = { { type = 'objectgroup',
+        name = 'walls', properties = { collidable = true }, objects = { { id = 1, shape = 'rectangle', x = 0, y = 0,
+        width = 16, height = 8 } } } } }, S.pace())
+      assert(#level.bodies == 1, 'S.tiled')
+      for name in pairs(package.loaded) do assert(not name:match('^strike'), 'loaded ' .. name) end
     "); then :; else echo "copy-check: $vm could not use a copy as $mod" >&2; status=1; fi
   done
 done

@@ -29,4 +29,5 @@ return {
   require(ROOT .. 'terrain'),
   require(ROOT .. 'stress'),
   (require(ROOT .. 'platformer')), -- (parenthesised: Lua 5.4's require returns a second value)
+  (require(ROOT .. 'tiled')),
 }

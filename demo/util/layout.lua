@@ -27,7 +27,7 @@ function layout.helpLines(list, index)
   for _, line in ipairs(scene.help) do lines[#lines + 1] = line end
   local keys = {}
   for i, s in ipairs(list) do keys[i] = ('%d %s'):format(i, s.name) end
-  keys[#keys + 1] = 'H or F1: hide/show help    Esc: quit'
+  keys[#keys + 1] = 'H or F1: help  Esc: quit'
   local line, used = nil, 1
   for _, key in ipairs(keys) do
     if line and used < layout.KEY_LINES and #line + 2 + #key > layout.HELP_CHARS then

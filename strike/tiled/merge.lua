@@ -1,0 +1,232 @@
+--- The solid full-square tiles of a tile layer merged into as few bodies as possible, for
+--- strike.tiled: one body per connected region (tiles that share a side and the same
+--- options; tiles that meet only at a corner are two regions), holes and all.
+---
+--- A region is a Collider of axis-aligned rectangles whose shared faces are marked as seams
+--- (`_seams`, strike/base/VertexShape.lua): the same mechanism that makes the pieces of an
+--- S.trikers.Concave one solid. Why that and not the alternatives (each failure below is shown
+--- in spec/tiled_tiles_spec.lua, "the alternatives"; the README, "Levels from Tiled", gives
+--- the cost of large regions):
+---   * chains around the outlines (S.trikers.Chain loops, holes reversed) are ghost-free but
+---     are surfaces, not solids: a body whose centre is inside passes through, containsPoint
+---     is false inside, and nothing is pushed out;
+---   * one S.trikers.Concave per region needs a simple outline: a region with a hole is not
+---     one (a keyhole cut touches itself, which the decomposition refuses), and tiles meeting
+---     at one corner neither;
+---   * plain touching rectangles are solid and ghost-free for S.triking and space:move (the
+---     outline rule, and move's skin), but their shared faces are surfaces to the collider
+---     queries: a point on one is inside neither rectangle (queryPoint misses it) and a ray
+---     from inside the region stops there. With the faces marked as seams, containsPoint is
+---     true on them, rays report only the region's outline, and S.triking never ends a push on
+---     a seam, as for a Concave.
+---
+--- The rectangles: each row's solid cells in maximal runs (cells of the same key side by side),
+--- a run below another with exactly the same columns and key extending its rectangle
+--- downward. So rectangles meet only along horizontal faces (two runs of a row never touch:
+--- they would be one), a seam part of a face always ends at a corner of the region's outline,
+--- and two seam parts of one face never touch. Regions are the connected components of the
+--- rectangles (union-find over runs of consecutive rows that share a column and a key).
+--- Everything is kept in flat arrays: no table per tile, one per rectangle with a seam.
+local ROOT = (...):match('^(.-)%.tiled%.[^%.]+$')
+local Rectangle = require(ROOT .. '.shapes.Rectangle')
+local Collider = require(ROOT .. '.colliders.Collider')
+
+local M = {}
+
+local Builder = {}
+Builder.__index = Builder
+
+--- A new, empty region builder. Feed it the runs of each row (rows in increasing order, each
+--- row's runs in increasing column order) with row, run and finish; then read its regions.
+---@return table
+function M.new()
+  return setmetatable({
+    n = 0, x0 = {}, y0 = {}, x1 = {}, y1 = {}, key = {}, parent = {}, top = {}, bottom = {},
+    -- the previous row's runs (column from, column to (exclusive), key, rectangle) and the
+    -- current row's
+    pc0 = {}, pc1 = {}, pkey = {}, prect = {}, pn = 0, prow = false,
+    cc0 = {}, cc1 = {}, ckey = {}, crect = {}, cn = 0, crow = false,
+  }, Builder)
+end
+
+local function find(parent, i)
+  while parent[i] ~= i do
+    local p = parent[parent[i]]
+    parent[i] = p
+    i = p
+  end
+  return i
+end
+
+local function union(parent, i, j)
+  i, j = find(parent, i), find(parent, j)
+  if i < j then parent[j] = i elseif j < i then parent[i] = j end
+end
+
+local function push(list, a, b)
+  local n = #list
+  list[n + 1], list[n + 2] = a, b
+end
+
+-- Link the current row's runs to the previous row's: extend, or start rectangles, with
+-- their seams and unions; then the current row becomes the previous one.
+local function endRow(self)
+  local cn = self.cn
+  if self.crow then
+    local adjacent = self.prow and self.crow == self.prow + 1
+    local pc0, pc1, pkey, prect, pn = self.pc0, self.pc1, self.pkey, self.prect, self.pn
+    local cc0, cc1, ckey, crect = self.cc0, self.cc1, self.ckey, self.crect
+    local parent, top, bottom = self.parent, self.top, self.bottom
+    local j = 1
+    for i = 1, cn do
+      local c0, c1, k = cc0[i], cc1[i], ckey[i]
+      local rect = false
+      if adjacent then
+        while j <= pn and pc1[j] <= c0 do j = j + 1 end
+        if j <= pn and pc0[j] == c0 and pc1[j] == c1 and pkey[j] == k then
+          rect = prect[j] -- the same columns and key: one rectangle, one row taller
+          self.y1[rect] = self.crow + 1
+        end
+      end
+      if not rect then
+        local n = self.n + 1
+        self.n, rect = n, n
+        self.x0[n], self.y0[n], self.x1[n], self.y1[n], self.key[n], parent[n] = c0, self.crow, c1, self.crow + 1, k, n
+        if adjacent then
+          -- every run above that shares a column with this one and has its key: a seam
+          -- between the two rectangles, which are one region
+          local jj = j
+          while jj <= pn and pc0[jj] < c1 do
+            if pkey[jj] == k then
+              local a, b = pc0[jj], pc1[jj]
+              if a < c0 then a = c0 end
+              if b > c1 then b = c1 end
+              local above = prect[jj]
+              local list = top[n]
+              if not list then list = {}; top[n] = list end
+              push(list, a, b)
+              list = bottom[above]
+              if not list then list = {}; bottom[above] = list end
+              push(list, a, b)
+              union(parent, n, above)
+            end
+            jj = jj + 1
+          end
+        end
+      end
+      crect[i] = rect
+    end
+  end
+  -- the current row becomes the previous one (the arrays swap: nothing allocated)
+  self.pc0, self.cc0 = self.cc0, self.pc0
+  self.pc1, self.cc1 = self.cc1, self.pc1
+  self.pkey, self.ckey = self.ckey, self.pkey
+  self.prect, self.crect = self.crect, self.prect
+  self.pn, self.prow, self.cn = cn, self.crow, 0
+end
+
+--- Start row r (rows in increasing order; a row skipped is a row without solid tiles). The
+--- current row again goes on with it (its next chunk).
+---@param r integer
+function Builder:row(r)
+  if r == self.crow then return end
+  endRow(self)
+  self.crow = r
+end
+
+--- A run of solid cells of one key in the current row: columns c0 to c1 - 1. A run that
+--- starts where the last one ended, with its key, continues it (runs from two chunks).
+---@param c0 integer
+---@param c1 integer
+---@param key integer > 0
+function Builder:run(c0, c1, key)
+  local cn = self.cn
+  if cn > 0 and self.cc1[cn] == c0 and self.ckey[cn] == key then
+    self.cc1[cn] = c1
+    return
+  end
+  cn = cn + 1
+  self.cc0[cn], self.cc1[cn], self.ckey[cn] = c0, c1, key
+  self.cn = cn
+end
+
+--- End the last row. Returns the regions: a list of lists of rectangle numbers, each region
+--- in the order of its rectangles, regions in the order of their first rectangle (its first
+--- tile in row-major order).
+---@return table[]
+function Builder:finish()
+  endRow(self)
+  self.prow = false
+  local parent, regions, of = self.parent, {}, {}
+  for i = 1, self.n do
+    local r = find(parent, i)
+    local list = of[r]
+    if not list then
+      list = {}
+      of[r] = list
+      regions[#regions + 1] = list
+    end
+    list[#list + 1] = i
+  end
+  return regions
+end
+
+-- A face's seam from its parts (column pairs along it, increasing), the face running from
+-- column c0 to c1 (forward) or from c1 back to c0: false, true (all of it) or the parts as
+-- fractions of the face, increasing (strike/base/VertexShape.lua, `_seams`).
+local function seam(list, c0, c1, forward)
+  if not list then return false end
+  local n, len = #list, c1 - c0
+  if n == 2 and list[1] == c0 and list[2] == c1 then return true end
+  local parts = {}
+  if forward then
+    for i = 1, n do parts[i] = (list[i] - c0) / len end
+  else
+    for i = 1, n, 2 do
+      parts[n - i], parts[n - i + 1] = (c1 - list[i + 1]) / len, (c1 - list[i]) / len
+    end
+  end
+  return parts
+end
+
+--- The body of a region: a Collider of its rectangles, cell (c, r) spanning x from ox + c gw
+--- to ox + (c + 1) gw and y from oy + r gh to oy + (r + 1) gh, where (ox, oy) is the key's
+--- offset (offx[key], offy[key]), with the seams between them marked; and its number of tiles.
+---@param region integer[]
+---@param offx number[]
+---@param offy number[]
+---@param gw number
+---@param gh number
+---@return strike.Collider
+---@return integer tiles
+function Builder:body(region, offx, offy, gw, gh)
+  local body, tiles = Collider(), 0
+  for i = 1, #region do
+    local q = region[i]
+    local c0, r0, c1, r1, k = self.x0[q], self.y0[q], self.x1[q], self.y1[q], self.key[q]
+    local ox, oy = offx[k], offy[k]
+    tiles = tiles + (c1 - c0) * (r1 - r0)
+    local xa, xb, ya, yb = ox + c0 * gw, ox + c1 * gw, oy + r0 * gh, oy + r1 * gh
+    local rect = Rectangle((xa + xb) / 2, (ya + yb) / 2, xb - xa, yb - ya)
+    local t, b = self.top[q], self.bottom[q]
+    if t or b then
+      -- (faces as S.hapes.Rectangle numbers them: 1 the min-y side, running +x; 2 the +x
+      -- side; 3 the max-y side, running -x; 4 the -x side. Sides are never seams: two runs
+      -- of a row never touch)
+      rect._seams = { seam(t, c0, c1, true), false, seam(b, c0, c1, false), false }
+    end
+    body:add(rect)
+  end
+  return body, tiles
+end
+
+--- The rectangle q: its columns c0 to c1 and rows r0 to r1 (ends exclusive) and its key.
+---@param q integer
+---@return integer c0
+---@return integer r0
+---@return integer c1
+---@return integer r1
+---@return integer key
+function Builder:rect(q) return self.x0[q], self.y0[q], self.x1[q], self.y1[q], self.key[q] end
+
+return M
