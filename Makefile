@@ -47,9 +47,10 @@ copy-check:
 rockspec-check:
 	@bash tools/rockspec-check.sh $(VMS)
 
-# Benchmarks, not part of test: bench/run.lua, bench/move.lua and bench/tiled.lua (S.tiled's
-# load time) under each of BENCH_VMS, tables printed and saved to bench/results/<vm>.csv,
-# move-<vm>.csv and tiled-<vm>.csv. STRIKE_PEERS=/path/to/peers adds the peers found there.
+# Benchmarks, not part of test: bench/run.lua, bench/move.lua, bench/movers.lua and
+# bench/tiled.lua (S.tiled's load time) under each of BENCH_VMS (bench/bench.sh), tables
+# printed and saved to bench/results/<vm>.csv, move-<vm>.csv, movers-<vm>.csv and
+# tiled-<vm>.csv. STRIKE_PEERS=/path/to/peers adds the peers found there.
 BENCH_VMS ?= luajit lua5.4
 
 bench:
