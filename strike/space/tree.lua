@@ -7,9 +7,9 @@
 --- code taken):
 --- * A binary tree whose leaves hold one proxy each, stored in flat number arrays indexed
 ---   by node (parent, two children, height, box, proxy id) with a free list of nodes.
---- * Each leaf of a proxy that moved holds a fat box: the proxy's exact box grown by a margin of (w + h) / 4 on
----   every side (4-14 px for 8-28 px bodies, 0.5 px for a 1 px bullet, about 500 px for a
----   2,000 px platform, nothing for a point), then stretched ahead along the last
+--- * Each leaf of a proxy that moved holds a fat box: the proxy's exact box grown by a margin
+---   of MARGIN (w + h) on every side (6-22 px for 8-28 px bodies, 0.8 px for a 1 px bullet,
+---   about 800 px for a 2,000 px platform, nothing for a point), then stretched ahead along the last
 ---   displacement by 4 times that displacement, at most 32 (w + h) per axis (so a teleport
 ---   does not leave a huge box behind). Margins scale with each box, so nothing depends on units
 ---   or on the distance from the origin. Moving a box inside its fat box costs a few
