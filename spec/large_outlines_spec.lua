@@ -260,6 +260,39 @@ describe('S.trikers.Concave of a polygon with a tooth on every face', function()
   end)
 end)
 
+describe('the seam parts of a face', function()
+  it('come sorted by start, stably, however many (property)', function()
+    -- (a comb's bar has a part under each tooth; they may arrive in any order, some with equal
+    -- starts: the oracle is a plain stable sort of the records)
+    local seamOf = require('strike.base.VertexShape')._seamOf
+    local rng = PRNG.new(SEED + 5)
+    budget.loop(40, function(case)
+      local k = rng:int(2, 400)
+      local parts, recs = {}, {}
+      for j = 1, k do
+        local a = rng:int(0, 3 * k) / (3 * k) -- (coarse: equal starts happen)
+        local b = a + rng:range(0.001, 0.01)
+        parts[2 * j - 1], parts[2 * j] = a, b
+        recs[j] = { a, b }
+      end
+      for j = 2, k do -- (insertion: a record moves before those that start later only)
+        local r, i = recs[j], j - 1
+        while i >= 1 and recs[i][1] > r[1] do
+          recs[i + 1] = recs[i]
+          i = i - 1
+        end
+        recs[i + 1] = r
+      end
+      local got = seamOf(parts, 2 * k, 1, 1e-12)
+      for j = 1, k do
+        assert(got[2 * j - 1] == recs[j][1] and got[2 * j] == recs[j][2],
+          ('seed %d case %d (%d parts): part %d is %.17g..%.17g, want %.17g..%.17g'):format(SEED + 5, case, k, j,
+            got[2 * j - 1], got[2 * j], recs[j][1], recs[j][2]))
+      end
+    end)
+  end)
+end)
+
 -- ConvexPolygon from many points -----------------------------------------------------------
 
 -- k points on a circle at sorted random angles (gaps from 0.5 to 1 times the mean: every turn
