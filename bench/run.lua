@@ -20,7 +20,10 @@
 --- lifts that limit.
 ---
 --- A second table times S.trikers.Concave (strike only) on outlines of 1,000 to 10,000
---- vertices, so that the growth of the convex decomposition with the vertex count shows.
+--- vertices, so that the growth of the convex decomposition with the vertex count shows: a
+--- random star, a regular star (the worst case found: its middle piece has n / 2 vertices, every
+--- face a cut) and a comb; and says whether the slowest build of 10,000 vertices stays under
+--- 1 s (issue 21's target, on every VM: BENCH_VMS="lua5.1 lua5.2 lua5.3 lua5.4 luajit").
 ---
 --- Adapter methods: { name, build = function(desc) → object or nil (unsupported),
 --- test = function(a, b) → hit, separation length }, and optionally
@@ -237,6 +240,7 @@ end
 local CONCAVE_SIZES, CONCAVE_RUNS = { 1000, 2000, 5000, 10000 }, 3
 local CONCAVE_KINDS = {
   { 'star', 'random star (random radius 0.2-1 per vertex, sorted angles)' },
+  { 'regular', 'regular star (n/2 spikes, radii 1 and 0.5)' },
   { 'comb', 'comb (n/4 rectangular teeth)' },
 }
 local concave = {} -- concave[kind][n] = { seconds =, kb =, pieces =, ok = }
@@ -387,6 +391,13 @@ if concave[CONCAVE_KINDS[1][1]] then
     cells[#cells + 1] = ok
     print('| ' .. table.concat(cells, ' | ') .. ' |')
   end
+  local largest, slowest, which = CONCAVE_SIZES[#CONCAVE_SIZES], 0, nil
+  for _, k in ipairs(CONCAVE_KINDS) do
+    local r = concave[k[1]][largest]
+    if r.seconds > slowest then slowest, which = r.seconds, k[1] end
+  end
+  print(('Slowest at %d vertices: %.0f ms (%s); target (issue 21): under 1,000 ms on every VM, %s'):format(largest,
+    slowest * 1000, which, slowest < 1 and 'met' or 'NOT MET'))
 end
 if #skipped > 0 then print('peers skipped: ' .. table.concat(skipped, '; ')) end
 if not peerDir then print('(no peers: set STRIKE_PEERS to a folder with HC, Strike, slick or bump.lua checkouts)') end

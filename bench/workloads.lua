@@ -253,6 +253,9 @@ end
 ---   'star'  a random star: one vertex in each of n equal angular sectors (so at sorted random
 ---           angles), each at a random radius in [0.2, 1] -- spiky, about half the vertices
 ---           reflex;
+---   'regular'  a regular star of n / 2 spikes (n even): tips at radius 1, notches at 0.5 --
+---           the worst case for the pieces: a piece of n / 2 vertices in the middle, every face
+---           of it a cut (issue 21);
 ---   'comb'  a comb of n / 4 rectangular teeth on a base (n a multiple of 4).
 ---@param kind string @param n integer @param seed integer
 ---@return number[]
@@ -262,6 +265,11 @@ function W.outline(kind, n, seed)
     local rng = PRNG.new(seed)
     for i = 1, n do
       local a, r = 2 * pi * (i - 1 + rng:range(0.05, 0.95)) / n, rng:range(0.2, 1)
+      v[2 * i - 1], v[2 * i] = r * math.cos(a), r * math.sin(a)
+    end
+  elseif kind == 'regular' then
+    for i = 1, n do
+      local a, r = pi * (i - 1) / (n / 2), i % 2 == 1 and 1 or 0.5
       v[2 * i - 1], v[2 * i] = r * math.cos(a), r * math.sin(a)
     end
   elseif kind == 'comb' then

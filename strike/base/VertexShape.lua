@@ -517,6 +517,9 @@ function VertexShape:_onSeams(px, py)
   return false
 end
 
+-- _seamOf sorts up to this many parts by insertion, more by table.sort.
+local SEAM_SORT = 16
+
 --- (internal) A face's seam from the seam parts found on it: `parts` (nil when none; flat
 --- fractions lo, hi of the face, `np` of them, in any order) on a face `len` long, with the
 --- tolerance `tol` (a length). false when there are none, true when one part covers the
@@ -530,17 +533,128 @@ end
 function VertexShape._seamOf(parts, np, len, tol)
   if not parts then return false end
   if np == 2 and parts[1] * len <= tol and (1 - parts[2]) * len <= tol then return true end
-  for j = 3, np - 1, 2 do -- (insertion sort by start)
-    local lo, hi, m = parts[j], parts[j + 1], j - 2
-    while m >= 1 and parts[m] > lo do
-      parts[m + 2], parts[m + 3] = parts[m], parts[m + 1]
-      m = m - 2
+  if np <= 2 * SEAM_SORT then
+    for j = 3, np - 1, 2 do -- (insertion sort by start)
+      local lo, hi, m = parts[j], parts[j + 1], j - 2
+      while m >= 1 and parts[m] > lo do
+        parts[m + 2], parts[m + 3] = parts[m], parts[m + 1]
+        m = m - 2
+      end
+      parts[m + 2], parts[m + 3] = lo, hi
     end
-    parts[m + 2], parts[m + 3] = lo, hi
+    return parts
+  end
+  -- Many parts (the bar of a comb under its teeth, which come in any order): the insertion
+  -- sort would be quadratic, half of a 2,500-tooth comb's Concave on Lua 5.1-5.4. The same
+  -- order, stable as it is: the parts' numbers sorted by start, then by number.
+  local k, idx, copy = np / 2, {}, {}
+  for j = 1, k do idx[j] = j end
+  table.sort(idx, function(a, b)
+    local sa, sb = parts[2 * a - 1], parts[2 * b - 1]
+    if sa ~= sb then return sa < sb end
+    return a < b
+  end)
+  for j = 1, np do copy[j] = parts[j] end
+  for j = 1, k do
+    local o = idx[j]
+    parts[2 * j - 1], parts[2 * j] = copy[2 * o - 1], copy[2 * o]
   end
   return parts
 end
 local seamOf = VertexShape._seamOf
+
+-- _seamsFrom tests every face against every source face up to this many pairs; above it (a
+-- large piece of a Concave, every face of which may be a seam) it tests only the pairs that
+-- seamPairs finds.
+local SEAM_PAIRS = 256
+
+--- The source faces (src and count as _seamsFrom takes them) that can lie on each of this
+--- shape's n faces: those of face i are list[first[i] .. first[i + 1] - 1], ascending, each
+--- given as the index of its first number in src (5 * q - 4 for source face q). A source face
+--- that gives face i a seam part has a point within the tolerance of face i's segment (its ends
+--- are within it of the line, and the part lies on the segment), so along any axis its span
+--- and face i's, widened by `pad` (at least that tolerance plus rounding), overlap. The spans
+--- along the axis (0.8, 0.6) are swept in order (as Concave's candidates do): the pairs found
+--- are the overlapping ones, a few per face for faces and source faces on a convex outline
+--- (along the axis it is two chains, each of spans that only touch), so that the whole costs
+--- O(m log m) for m faces in all instead of n * count tests; the tests themselves are unchanged,
+--- in the same order, so the seams are the same.
+---@param shape strike.VertexShape
+---@param n integer
+---@param src table
+---@param count integer
+---@param pad number
+---@return integer[] first
+---@return integer[] list
+local function seamPairs(shape, n, src, count, pad)
+  local lo, hi, order = {}, {}, {}
+  for i = 1, n do
+    local k, l = STRIDE * i + BASE, STRIDE * (i < n and i + 1 or 1) + BASE
+    local a, b = 0.8 * shape[k] + 0.6 * shape[k + VY], 0.8 * shape[l] + 0.6 * shape[l + VY]
+    if a > b then a, b = b, a end
+    lo[i], hi[i], order[i] = a - pad, b + pad, i
+  end
+  for q = 1, count do
+    local o = 5 * q - 5
+    local a, b = 0.8 * src[o + 1] + 0.6 * src[o + 2], 0.8 * src[o + 3] + 0.6 * src[o + 4]
+    if a > b then a, b = b, a end
+    lo[n + q], hi[n + q], order[n + q] = a, b, n + q
+  end
+  local m = n + count
+  table.sort(order, function(u, v)
+    if lo[u] ~= lo[v] then return lo[u] < lo[v] end
+    return u < v
+  end)
+  -- the overlapping (face, source face) pairs, and how many each source face has
+  local pf, pq, np, perSrc = {}, {}, 0, {}
+  for q = 1, count do perSrc[q] = 0 end
+  for s = 1, m do
+    local u = order[s]
+    local top = hi[u]
+    for t = s + 1, m do
+      local v = order[t]
+      if lo[v] > top then break end
+      if (u <= n) ~= (v <= n) then
+        local f, q = u, v - n
+        if v <= n then f, q = v, u - n end
+        np = np + 1
+        pf[np], pq[np] = f, q
+        perSrc[q] = perSrc[q] + 1
+      end
+    end
+  end
+  -- two stable counting sorts: by source face, then by face (so each face's list ascends)
+  local at, byQ = {}, {}
+  local pos = 1
+  for q = 1, count do
+    at[q] = pos
+    pos = pos + perSrc[q]
+  end
+  for p = 1, np do
+    local q = pq[p]
+    byQ[at[q]] = pf[p]
+    at[q] = at[q] + 1
+  end
+  local first, perFace, put = {}, {}, {}
+  for i = 1, n do perFace[i] = 0 end
+  for p = 1, np do perFace[pf[p]] = perFace[pf[p]] + 1 end
+  pos = 1
+  for i = 1, n do
+    first[i], put[i] = pos, pos
+    pos = pos + perFace[i]
+  end
+  first[n + 1] = pos
+  local list, p = {}, 1
+  for q = 1, count do
+    for _ = 1, perSrc[q] do
+      local f = byQ[p]
+      list[put[f]] = 5 * q - 4
+      put[f] = put[f] + 1
+      p = p + 1
+    end
+  end
+  return first, list
+end
 
 --- (internal) The `_seams` of this shape (fresh, built) from the seam faces of the shapes it
 --- was made of: `src` holds `count` faces as x1, y1, x2, y2, seam (world coordinates of the
@@ -556,6 +670,8 @@ function VertexShape:_seamsFrom(src, count)
   local n = self[COUNT]
   local tol = LINE_EPS * self[RADIUS] * self[SCALE] + self:_seamTolerance()
   local seams, any = {}, false
+  local first, list -- (nil: every face against every source face)
+  if n * count > SEAM_PAIRS then first, list = seamPairs(self, n, src, count, 4 * tol) end
   for i = 1, n do
     local k, l = STRIDE * i + BASE, STRIDE * (i < n and i + 1 or 1) + BASE
     local ax, ay = self[k], self[k + VY]
@@ -563,7 +679,10 @@ function VertexShape:_seamsFrom(src, count)
     local len2 = ex * ex + ey * ey
     local len = sqrt(len2)
     local parts, np = nil, 0
-    for q = 1, 5 * count, 5 do
+    local c0, c1 = 1, count
+    if first then c0, c1 = first[i], first[i + 1] - 1 end
+    for c = c0, c1 do
+      local q = list and list[c] or 5 * c - 4
       local rx, ry, sx, sy, seam = src[q] - ax, src[q + 1] - ay, src[q + 2] - ax, src[q + 3] - ay, src[q + 4]
       if (sx - rx) * ex + (sy - ry) * ey > 0 and abs(ex * ry - ey * rx) <= tol * len
         and abs(ex * sy - ey * sx) <= tol * len then

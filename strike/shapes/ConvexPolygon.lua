@@ -74,8 +74,34 @@ function ConvexPolygon:new(...)
     fail(('%s: needs at least 3 distinct non-collinear points, got %d distinct point%s%s'):format(
       fname, distinct, distinct == 1 and '' or 's', distinct >= 3 and ', all collinear' or ''))
   end
+  -- A point equal to a hull vertex is never strictly inside: hull.strictlyInside's first test on
+  -- that vertex's own outgoing edge is exactly 0 (a difference times 0, minus one times 0). So
+  -- only the other points take the test, which costs up to h steps each: for the points of a
+  -- large convex outline (a piece of S.trikers.Concave can have thousands of vertices) it made
+  -- this check quadratic. The points usually come in hull order, either winding: a cursor on
+  -- the hull, started at the first point and moved one step either way, finds them; a point
+  -- it does not find (a dropped collinear one, or points in another order) takes the test, as
+  -- before, so the answer and the point an error names are unchanged.
+  local cur = 1
+  for j = 1, h do
+    if hx[j] == xs[1] and hy[j] == ys[1] then
+      cur = j
+      break
+    end
+  end
   for i = 1, n do
-    if hull.strictlyInside(hx, hy, h, xs[i], ys[i]) then
+    local x, y, vertex = xs[i], ys[i], false
+    if hx[cur] == x and hy[cur] == y then
+      vertex = true
+    else
+      local nx, pv = cur < h and cur + 1 or 1, cur > 1 and cur - 1 or h
+      if hx[nx] == x and hy[nx] == y then
+        cur, vertex = nx, true
+      elseif hx[pv] == x and hy[pv] == y then
+        cur, vertex = pv, true
+      end
+    end
+    if not vertex and hull.strictlyInside(hx, hy, h, x, y) then
       fail(('%s: the points describe a concave polygon (point %d, at %s, %s, is inside the hull);'
         .. ' use S.trikers.Concave for concave outlines'):format(fname, i, describe(xs[i]), describe(ys[i])))
     end
