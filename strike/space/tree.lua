@@ -564,7 +564,7 @@ end
 -- Partition leaves[lo..hi] (keys[i] the centre of leaves[i] along the split axis) so that
 -- leaves[mid] holds the leaf of rank mid, those before it keys no larger and those after no
 -- smaller (Hoare's selection, the middle entry as pivot: deterministic).
-local function select(leaves, keys, lo, hi, mid)
+local function selectRank(leaves, keys, lo, hi, mid)
   while lo < hi do
     local pivot = keys[(lo + hi - (lo + hi) % 2) / 2]
     local i, j = lo, hi
@@ -601,7 +601,7 @@ local function buildRange(self, leaves, keys, lo, hi)
     if alongX then keys[i] = x0[l] + x1[l] else keys[i] = y0[l] + y1[l] end
   end
   local mid = (lo + hi - (lo + hi) % 2) / 2
-  select(leaves, keys, lo, hi, mid)
+  selectRank(leaves, keys, lo, hi, mid)
   local a = buildRange(self, leaves, keys, lo, mid)
   local b = buildRange(self, leaves, keys, mid + 1, hi)
   local p = newNode(self)
