@@ -22,11 +22,7 @@ local opts = { n = { 1000, 5000, 20000 }, worlds = { 'uniform', 'clustered', 'mi
   only = nil }
 do
   local i = 1
-  local function list(s)
-    local t = {}
-    for w in s:gmatch('[^,]+') do t[#t + 1] = tonumber(w) or w end
-    return t
-  end
+  local list = require('bench.harness').list
   while arg[i] do
     local a, v = arg[i], arg[i + 1]
     if a == '--n' then opts.n = list(v)

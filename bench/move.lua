@@ -53,6 +53,8 @@
 package.path = './?.lua;./?/init.lua;' .. package.path
 
 local PRNG = require('spec.helpers.prng')
+local H = require('bench.harness')
+local fmt, tableOut, fullGC = H.fmt, H.tableOut, H.fullGC
 
 local clock = os.clock
 local jit = rawget(_G, 'jit')
@@ -61,11 +63,7 @@ local sqrt, cos, sin, pi, abs, min, max, huge = math.sqrt, math.cos, math.sin, m
 
 local opts = { moves = 10000, only = nil, save = false, jit = nil, peerJit = false }
 do
-  local function list(s)
-    local t = {}
-    for v in s:gmatch('[^,]+') do t[#t + 1] = v end
-    return t
-  end
+  local list = H.list
   local i = 1
   while arg[i] do
     local a, v = arg[i], arg[i + 1]
@@ -88,12 +86,7 @@ end
 -- LuaJIT's limits: LÖVE's by default, as a game runs (LÖVE 11.4's boot.lua raises them:
 -- maxtrace 2000, maxrecord 8000, maxmcode 16384 KB), or the standalone interpreter's own
 -- with --jit stock.
-local JIT_LIMITS = 'stock'
-if jit and opts.jit ~= 'stock' then
-  if opts.jit ~= nil and opts.jit ~= 'love' then error('--jit must be love or stock') end
-  require('jit.opt').start('maxtrace=2000', 'maxrecord=8000', 'maxmcode=16384')
-  JIT_LIMITS = 'love'
-end
+local JIT_LIMITS = H.jitLimits(opts.jit)
 
 local N = 1000 -- static boxes
 local SEED = 20261200 + N
@@ -254,10 +247,6 @@ if jit and jit.attach then
   end, 'trace')
 end
 
-local function fullGC()
-  collectgarbage('collect')
-  collectgarbage('collect')
-end
 
 -- Every number, for the CSV: library, metric, value.
 local csv = {}
@@ -331,19 +320,6 @@ end
 
 ---------------------------------------------------------------------------------------------
 -- Tables.
-local function fmt(x, d)
-  if x == nil then return '—' end
-  if x ~= x then return 'nan' end
-  return ('%.' .. (d or 2) .. 'f'):format(x)
-end
-local function tableOut(head, body)
-  print('| ' .. table.concat(head, ' | ') .. ' |')
-  local sep = {}
-  for i = 1, #head do sep[i] = '---' end
-  print('|' .. table.concat(sep, '|') .. '|')
-  for _, r in ipairs(body) do print('| ' .. table.concat(r, ' | ') .. ' |') end
-  print()
-end
 
 print(('strike move bench — %s%s'):format(vmName, jit and (' (JIT limits: ' .. JIT_LIMITS .. ')') or ''))
 for _, l in ipairs(libs) do

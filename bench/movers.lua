@@ -39,6 +39,8 @@
 package.path = './?.lua;./?/init.lua;' .. package.path
 
 local PRNG = require('spec.helpers.prng')
+local H = require('bench.harness')
+local fmt, tableOut, fullGC = H.fmt, H.tableOut, H.fullGC
 
 local clock = os.clock
 local jit = rawget(_G, 'jit')
@@ -47,11 +49,7 @@ local sqrt, cos, sin, pi, min, max, huge, floor = math.sqrt, math.cos, math.sin,
 
 local opts = { n = { 2000, 10000 }, frames = 30, only = nil, save = false, jit = nil, peerJit = false }
 do
-  local function list(s)
-    local t = {}
-    for v in s:gmatch('[^,]+') do t[#t + 1] = v end
-    return t
-  end
+  local list = H.list
   local i = 1
   while arg[i] do
     local a, v = arg[i], arg[i + 1]
@@ -81,12 +79,7 @@ end
 
 -- LuaJIT's limits: LÖVE's by default (LÖVE 11.4's boot.lua: maxtrace 2000, maxrecord 8000,
 -- maxmcode 16384 KB), or the standalone interpreter's own with --jit stock.
-local JIT_LIMITS = 'stock'
-if jit and opts.jit ~= 'stock' then
-  if opts.jit ~= nil and opts.jit ~= 'love' then error('--jit must be love or stock') end
-  require('jit.opt').start('maxtrace=2000', 'maxrecord=8000', 'maxmcode=16384')
-  JIT_LIMITS = 'love'
-end
+local JIT_LIMITS = H.jitLimits(opts.jit)
 
 local WARMUP = 5
 local vmName = jit and jit.version or _VERSION
@@ -227,10 +220,6 @@ if jit and jit.attach then
   end, 'trace')
 end
 
-local function fullGC()
-  collectgarbage('collect')
-  collectgarbage('collect')
-end
 
 local function jitOff(lib) return jit and lib.jitOff and not opts.peerJit end
 
@@ -287,18 +276,6 @@ end
 
 local csv = {}
 local function put(lib, n, metric, value) csv[#csv + 1] = { lib, n, metric, value } end
-local function fmt(v, d)
-  if v == nil then return '—' end
-  return ('%.' .. (d or 2) .. 'f'):format(v)
-end
-local function tableOut(head, body)
-  print('| ' .. table.concat(head, ' | ') .. ' |')
-  local sep = {}
-  for i = 1, #head do sep[i] = '---' end
-  print('|' .. table.concat(sep, '|') .. '|')
-  for _, r in ipairs(body) do print('| ' .. table.concat(r, ' | ') .. ' |') end
-  print()
-end
 
 local t00 = os.time()
 local title = ('strike movers bench — %s%s'):format(vmName, jit and (' (JIT limits: ' .. JIT_LIMITS .. ')') or '')

@@ -49,6 +49,8 @@
 package.path = './?.lua;./?/init.lua;' .. package.path
 
 local SW = require('bench.spaceworld')
+local H = require('bench.harness')
+local fmt, tableOut, fullGC = H.fmt, H.tableOut, H.fullGC
 
 local clock = os.clock
 local jit = rawget(_G, 'jit')
@@ -57,11 +59,7 @@ local abs, max, min, huge = math.abs, math.max, math.min, math.huge
 local opts = { n = { 1000, 5000, 20000, 100000 }, frames = 60, only = nil, save = false, hcMax = 20000,
   sections = { frame = true, rays = true, build = true, churn = true, memory = true } }
 do
-  local function list(s)
-    local t = {}
-    for v in s:gmatch('[^,]+') do t[#t + 1] = tonumber(v) or v end
-    return t
-  end
+  local list = H.list
   local i = 1
   while arg[i] do
     local a, v = arg[i], arg[i + 1]
@@ -86,12 +84,7 @@ end
 -- LuaJIT's limits: LÖVE's by default, as a game runs (LÖVE 11.4's boot.lua raises them:
 -- maxtrace 2000, maxrecord 8000, maxmcode 16384 KB; the issue's flush target is under these),
 -- or the standalone interpreter's own with --jit stock.
-local JIT_LIMITS = 'stock'
-if jit and opts.jit ~= 'stock' then
-  if opts.jit ~= nil and opts.jit ~= 'love' then error('--jit must be love or stock') end
-  require('jit.opt').start('maxtrace=2000', 'maxrecord=8000', 'maxmcode=16384')
-  JIT_LIMITS = 'love'
-end
+local JIT_LIMITS = H.jitLimits(opts.jit)
 
 local RAYS, RAY_N, RAY_LEN = 10000, 1000, 300
 local BUILD_N, MEMORY_N = 20000, 20000
@@ -214,10 +207,6 @@ local function put(section, lib, n, metric, value)
   csv[#csv + 1] = { section, lib, n, metric, value }
 end
 
-local function fullGC()
-  collectgarbage('collect')
-  collectgarbage('collect')
-end
 
 -- Before each library's run of a section: no garbage and, on LuaJIT, no traces left from
 -- the one before.
@@ -675,19 +664,6 @@ end
 
 ---------------------------------------------------------------------------------------------
 -- Tables.
-local function fmt(x, d)
-  if x == nil then return '—' end
-  if x ~= x then return 'nan' end
-  return ('%.' .. (d or 2) .. 'f'):format(x)
-end
-local function tableOut(head, rows)
-  print('| ' .. table.concat(head, ' | ') .. ' |')
-  local sep = {}
-  for i = 1, #head do sep[i] = '---' end
-  print('|' .. table.concat(sep, '|') .. '|')
-  for _, r in ipairs(rows) do print('| ' .. table.concat(r, ' | ') .. ' |') end
-  print()
-end
 
 print(('strike space bench — %s%s'):format(vmName, jit and (' (JIT limits: ' .. JIT_LIMITS .. ')') or ''))
 for _, l in ipairs(libs) do print(('  %-13s %s'):format(l.name, l.note)) end

@@ -76,7 +76,7 @@ local PARTS = { 'tiles', 'objects', 'both' }
 
 -- One part, in this process: its map, the check, the first load and the best of the rest.
 local function runPart(part)
-  if jit and opts.jit == 'love' then require('jit.opt').start('maxtrace=2000', 'maxrecord=8000', 'maxmcode=16384') end
+  require('bench.harness').jitLimits(opts.jit)
   local S = require('strike')
   local W = require('bench.workloads')
   local map = W.tiledMap(opts.size, opts.density, opts.objects, opts.seed)
