@@ -164,29 +164,10 @@ end
 
 --- Advance by dt, in fixed steps (at most 5 per call).
 ---@param state table @param dt number seconds
-function M.update(state, dt)
-  state.acc = math.min(state.acc + dt, 5 * M.STEP)
-  while state.acc >= M.STEP * (1 - 1e-9) do
-    M.step(state, M.STEP)
-    state.acc = state.acc - M.STEP
-  end
-end
-
-local MOVE_KEYS = { left = true, right = true, up = true, a = true, d = true, w = true }
+function M.update(state, dt) scene.fixedSteps(M, state, dt) end
 
 ---@param state table @param key string
-function M.keypressed(state, key)
-  state.keys[key] = true
-  if MOVE_KEYS[key] then
-    state.script = false
-  elseif key == 'p' then
-    state.script = true
-  elseif key == 'b' then
-    state.showBroadphase = not state.showBroadphase
-  elseif key == 'r' then
-    scene.reset(M, state)
-  end
-end
+function M.keypressed(state, key) scene.characterKey(M, state, key) end
 
 M.keyreleased = scene.keyreleased
 

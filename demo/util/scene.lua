@@ -44,6 +44,36 @@ end
 ---@return table state
 function scene.shot(M, S, w, h) return scene.advance(M, M.new(S, w, h)) end
 
+--- Advance scene M's state by dt in fixed steps of M.STEP (M.step each), at most 5 per call
+--- (the platformer's and the Tiled level's update): time left over waits in state.acc.
+---@param M table the scene module @param state table @param dt number seconds
+function scene.fixedSteps(M, state, dt)
+  state.acc = math.min(state.acc + dt, 5 * M.STEP)
+  while state.acc >= M.STEP * (1 - 1e-9) do
+    M.step(state, M.STEP)
+    state.acc = state.acc - M.STEP
+  end
+end
+
+local MOVE_KEYS = { left = true, right = true, up = true, a = true, d = true, w = true }
+
+--- keypressed for a scene with a character (the platformer, the Tiled level): the key is
+--- held in state.keys; a movement key (arrows, A, D, W) takes over from the script, P gives
+--- the character back to it, B shows or hides the broadphase, R starts scene M again.
+---@param M table the scene module @param state table @param key string
+function scene.characterKey(M, state, key)
+  state.keys[key] = true
+  if MOVE_KEYS[key] then
+    state.script = false
+  elseif key == 'p' then
+    state.script = true
+  elseif key == 'b' then
+    state.showBroadphase = not state.showBroadphase
+  elseif key == 'r' then
+    scene.reset(M, state)
+  end
+end
+
 --- keyreleased for a scene that keeps the keys held down in state.keys (its keypressed
 --- sets state.keys[key] = true).
 ---@param state table @param key string
