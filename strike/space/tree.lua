@@ -925,21 +925,17 @@ function Tree:pairs(out)
   return n
 end
 
---- The proxies whose exact boxes overlap the box (touching counts).
---- (Moves since the last pairs or query reach the tree first.)
----@param minx number
----@param miny number
----@param maxx number
----@param maxy number
----@param out table filled with the ids, ascending; entries past k are cleared
----@return integer k the number of ids
-function Tree:query(minx, miny, maxx, maxy, out)
-  checkBox('query', minx, miny, maxx, maxy)
-  flush(self)
-  local k = 0
-  local stack = self.stack
-  local top = seed(self, stack)
-  if top > 0 then
+-- The ids of the leaves whose exact boxes meet the box, into out[1..k], unsorted; returns k.
+-- (Two spellings, see refit: LuaJIT's tests a node when it pops it, one data-dependent branch
+-- a node, which keeps its traces few; the interpreters' tests a node before pushing it, so
+-- that the stack holds only nodes that meet the box: 8 % fewer VM instructions a move for
+-- bench/movers.lua's 2,000 movers on Lua 5.4, and on LuaJIT a third more machine code.)
+local boxWalk
+if JIT then
+  boxWalk = function(self, minx, miny, maxx, maxy, out)
+    local k = 0
+    local stack = self.stack
+    local top = seed(self, stack)
     local c1, c2, proxyOf = self.child1, self.child2, self.proxyOf
     local x0, y0, x1, y1 = self.nx0, self.ny0, self.nx1, self.ny1
     local px0, py0, px1, py1 = self.px0, self.py0, self.px1, self.py1
@@ -960,8 +956,64 @@ function Tree:query(minx, miny, maxx, maxy, out)
         end
       end
     end
-    sortRange(out, k)
+    return k
   end
+else
+  boxWalk = function(self, minx, miny, maxx, maxy, out)
+    local k = 0
+    local stack = self.stack
+    local top = seed(self, stack)
+    local c1, c2, proxyOf = self.child1, self.child2, self.proxyOf
+    local x0, y0, x1, y1 = self.nx0, self.ny0, self.nx1, self.ny1
+    local px0, py0, px1, py1 = self.px0, self.py0, self.px1, self.py1
+    local s = 0
+    for i = 1, top do -- (the roots)
+      local n = stack[i]
+      if x0[n] <= maxx and x1[n] >= minx and y0[n] <= maxy and y1[n] >= miny then
+        s = s + 1
+        stack[s] = n
+      end
+    end
+    top = s
+    while top > 0 do
+      local n = stack[top]
+      top = top - 1
+      local a = c1[n]
+      if a == 0 then
+        local id = proxyOf[n]
+        if px0[id] <= maxx and px1[id] >= minx and py0[id] <= maxy and py1[id] >= miny then
+          k = k + 1
+          out[k] = id
+        end
+      else
+        if x0[a] <= maxx and x1[a] >= minx and y0[a] <= maxy and y1[a] >= miny then
+          top = top + 1
+          stack[top] = a
+        end
+        a = c2[n]
+        if x0[a] <= maxx and x1[a] >= minx and y0[a] <= maxy and y1[a] >= miny then
+          top = top + 1
+          stack[top] = a
+        end
+      end
+    end
+    return k
+  end
+end
+
+--- The proxies whose exact boxes overlap the box (touching counts).
+--- (Moves since the last pairs or query reach the tree first.)
+---@param minx number
+---@param miny number
+---@param maxx number
+---@param maxy number
+---@param out table filled with the ids, ascending; entries past k are cleared
+---@return integer k the number of ids
+function Tree:query(minx, miny, maxx, maxy, out)
+  checkBox('query', minx, miny, maxx, maxy)
+  flush(self)
+  local k = boxWalk(self, minx, miny, maxx, maxy, out)
+  if k > 0 then sortRange(out, k) end
   local i = k + 1
   while out[i] ~= nil do
     out[i] = nil
