@@ -116,8 +116,11 @@ describe('examples/shooter', function()
   it('never lets a bullet through a wall, at 25 px a frame against 16 px walls', function()
     local fake = game('shooter')
     fake.run(1)
-    fake.mouse.x, fake.mouse.y = 400, 0 -- straight up at the top wall (y 0 to 16)
-    fake.keys.space = true
+    -- straight up at the top wall (y 0 to 16), walking down meanwhile, so that the bullets
+    -- start from every height: a bullet checked only where each frame puts it would pass the
+    -- wall from some of them (25 px a frame against the 22 px where it overlaps the wall)
+    fake.mouse.x, fake.mouse.y = 400, 0
+    fake.keys.space, fake.keys.down = true, true
     local seen = 0
     for _ = 1, 120 do
       fake.run(1)

@@ -16,8 +16,10 @@ local M = {}
 
 local function finite(v) return type(v) == 'number' and v == v and v > -math.huge and v < math.huge end
 
-local function fail(fname, msg)
-  error(('love.%s: %s'):format(fname, msg), 3)
+-- An error at the line that called love.<fname>: `depth` 1 when fail is called by that
+-- function itself, 2 when by a helper it calls.
+local function fail(fname, msg, depth)
+  error(('love.%s: %s'):format(fname, msg), 2 + (depth or 1))
 end
 
 -- A module table whose missing members are an error naming them.
@@ -53,17 +55,19 @@ function M.new(opts)
     local list = { ... }
     if type(list[1]) == 'table' then list = list[1] end
     for i, v in ipairs(list) do
-      if not finite(v) then fail(fname, ('coordinate %d must be a finite number, got %s'):format(i, tostring(v))) end
+      if not finite(v) then fail(fname, ('coordinate %d must be a finite number, got %s'):format(i, tostring(v)), 2) end
     end
     return list
   end
   local function mode(fname, m)
-    if not MODES[m] then fail(fname, ("draw mode must be 'fill' or 'line', got %s"):format(tostring(m))) end
+    if not MODES[m] then fail(fname, ("draw mode must be 'fill' or 'line', got %s"):format(tostring(m)), 2) end
   end
   local function numbers(fname, names, ...)
     local args = { ... }
     for i, n in ipairs(names) do
-      if not finite(args[i]) then fail(fname, ('%s must be a finite number, got %s'):format(n, tostring(args[i]))) end
+      if not finite(args[i]) then
+        fail(fname, ('%s must be a finite number, got %s'):format(n, tostring(args[i])), 2)
+      end
     end
   end
 
@@ -124,7 +128,7 @@ function M.new(opts)
   end
   local function text(fname, s)
     if type(s) ~= 'string' and type(s) ~= 'number' then
-      fail(fname, ('text must be a string or a number, got %s'):format(type(s)))
+      fail(fname, ('text must be a string or a number, got %s'):format(type(s)), 2)
     end
     return tostring(s)
   end
