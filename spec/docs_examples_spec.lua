@@ -170,6 +170,7 @@ describe('the doc-test conventions', function()
       '<!-- doc-test: continue -->', '', '```lua', 'y()', '```',
       '<!-- doc-test: continue -->', 'text', '```', 'plain', '```',
       '<!-- doc-test: run -->',
+      'A mention, `<!-- doc-test: continue -->`, in inline code is no marker.',
     }, '\n'))
     assert.equals(3, #blocks)
     assert.same({ kind = 'skip', reason = 'the reason', line = 1 }, blocks[1].marker)
