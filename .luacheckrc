@@ -7,5 +7,9 @@ files['.busted'] = { std = 'min' }
 exclude_files = { '.git' }
 -- The LÖVE demo (love demo): LÖVE's globals, and only its callbacks defined.
 files['demo/'] = { std = 'min+love' }
+-- The example games (love examples/<name>), likewise. examples/demo.lua is plain Lua.
+files['examples/platformer/'] = { std = 'min+love' }
+files['examples/shooter/'] = { std = 'min+love' }
+files['examples/tiled/'] = { std = 'min+love' }
 -- bench/lovephysics: a LÖVE program (Box2D through love.physics) that bench/space.lua runs.
 files['bench/lovephysics/'] = { std = 'min+love' }

@@ -1,4 +1,6 @@
--- The README's walkthroughs, as a game would write them.
+-- User-defined shapes and colliders, as a game would write them: the original Strike README's
+-- walkthroughs, and the trapezoid of docs/extending.md in its first form (that guide's own
+-- blocks run in spec/docs_examples_spec.lua).
 local S = require('strike')
 local expect = require('spec.helpers.expect')
 local near, nearList, raisesAt = expect.near, expect.nearList, expect.raisesAt
@@ -26,7 +28,7 @@ describe('a user-defined shape', function()
     return cx, cy, self.dx, self.dy, self.angle
   end
 
-  -- A trapezoid, the README's other example.
+  -- A trapezoid whose (x, y) is its box's centre (docs/extending.md's places its centroid there).
   local Trapezoid = S.hapes.ConvexPolygon:extend()
   function Trapezoid:new(x, y, top, bottom, height)
     self.top, self.bottom, self.height = top, bottom, height

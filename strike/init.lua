@@ -1,7 +1,7 @@
 --- strike: 2D collision detection for LÖVE and any Lua (5.1, 5.2, 5.3, 5.4, LuaJIT).
 --- Separating-axis tests between convex shapes, grouped into colliders.
 ---
---- Conventions (README, "Conventions"):
+--- Conventions (README.md, "Conventions"):
 ---  * coordinates are plain numbers; with LÖVE, y grows downward;
 ---  * polygons are stored in positive winding (positive shoelace area: counter-clockwise
 ---    with y up, clockwise on a LÖVE screen); edge normals point outward;
@@ -80,10 +80,11 @@ function S.AT(shape1, shape2, out)
   return out
 end
 
---- Collision between two colliders (or shapes): the deepest MTV over all pairs of their
---- leaf shapes, or false when no pair collides. Members of one collider never collide
+--- Collision between two colliders (or shapes): the shortest push of collider2 that leaves
+--- none of its leaf shapes overlapping any of collider1's (the outline rule: for one leaf
+--- each, their MTV), or false when no pair collides. Members of one collider never collide
 --- with each other (nor with the members of colliders nested in it). The vector points
---- from collider1 toward collider2.
+--- from collider1 toward collider2 (docs/collision.md).
 ---@param collider1 strike.Collider|strike.Shape
 ---@param collider2 strike.Collider|strike.Shape
 ---@param out strike.MTV|nil filled and returned on a collision; its contents are unspecified after false
@@ -151,7 +152,7 @@ local function checkMTV(fname, mtv)
   end
 end
 
---- Contact points of a collision (see "Contacts" in the README): a list of points
+--- Contact points of a collision (docs/collision.md, "Contacts"): a list of points
 --- `{x =, y =, depth =, id =, nx =, ny =, colliderShape =, collidedShape =}` (the shapes whose
 --- features touch, and the point's unit normal from the first toward the second) with
 --- `count` and `nx, ny` (the MTV's direction), or nil for a separating MTV. Between two
@@ -303,7 +304,7 @@ local sweep = require(ROOT .. '.motion.sweep')
 local separation = require(ROOT .. '.motion.separation')
 
 --- Sweep body a by (dx, dy), turning by `angle` (radians, default 0) about its centroid, against
---- body b, which stays (strike/motion/sweep.lua; README, "Sweeps"): false when they never
+--- body b, which stays (strike/motion/sweep.lua; docs/moving.md, "Sweeps"): false when they never
 --- touch, else the hit `{t =, x =, y =, nx =, ny =, overlapping =}` (filled into `out` when
 --- given): t in [0, 1] the fraction of the move at the first touch, (x, y) where they touch,
 --- (nx, ny) the unit normal from b toward a; bodies that already overlap give t = 0 and
@@ -317,9 +318,9 @@ local separation = require(ROOT .. '.motion.separation')
 ---@return table|false
 function S.weep(a, dx, dy, b, angle, out) return sweep.weep(a, dx, dy, b, angle, out) end
 
---- The distance between two bodies and the closest points on each (strike/motion/
---- separation.lua; README, "Distance"): `d, ax, ay, bx, by`; for overlapping bodies d is minus
---- the depth, and the points are those of each that reach deepest into the other.
+--- The distance between two bodies and the closest points on each: `d, ax, ay, bx, by`
+--- (strike/motion/separation.lua; docs/collision.md, "Distance"); for overlapping bodies d is
+--- minus the depth, and the points are those of each that reach deepest into the other.
 ---@param a strike.Collider|strike.Shape
 ---@param b strike.Collider|strike.Shape
 ---@return number d
@@ -334,13 +335,13 @@ require(ROOT .. '.space.motion') -- (Space:cast, Space:move, Space:addResponse)
 Space._ite = S.ite
 
 --- A new, empty space: a world of colliders and shapes with a broadphase, exact queries,
---- layers and contact events (strike/space/Space.lua; README, "The space").
+--- layers and contact events (strike/space/Space.lua; docs/space.md).
 ---@return strike.Space
 function S.pace() return Space() end
 
 --- Load a Tiled map (Tiled's Lua export, or a JSON map decoded into the same tables) into a
 --- space: its collidable objects and tiles as bodies, a tile layer's full-square tiles merged
---- into one body per connected region (strike/tiled/; README, "Levels from Tiled"). Returns
+--- into one body per connected region (strike/tiled/; docs/tiled.md). Returns
 --- the level: `bodies` (in map order), `byId[id]` (the body of the Tiled object with that
 --- id), `objectOf[body]` (the Tiled object, or for tiles {layer =, tile =, ...}) and
 --- `remove()`. Bad input is an error naming the layer and object, and adds nothing.

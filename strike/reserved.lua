@@ -1,4 +1,4 @@
---- The names strike keeps on a body (README, "Your data on bodies"): its integer keys (the
+--- The names strike keeps on a body (README.md, "Your data on bodies"): its integer keys (the
 --- world data and caches laid out in strike/base/layout.lua), every name starting with `_`,
 --- and its methods' names. Every other name is the game's: strike never reads or writes it.
 ---

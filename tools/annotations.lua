@@ -608,6 +608,36 @@ function M.check(source, filename)
   return problems, { functions = #publicFns + #aliases, aliases = #aliases }
 end
 
+--- The public functions and aliases of one file's text (rules 3 and 4), with the doc block
+--- directly above each, for tools/apidoc.lua: a list in line order of { name =, line =,
+--- params =, isMethod =, target =, doc = } where name is as written (`A.b`, `A:b`), params
+--- the parameter names (an alias's: its target's when the file defines it, else nil), target
+--- the name an alias refers to (nil for a function) and doc the block's comment texts, top to
+--- bottom, as written (`--- text`, `---@param ...`).
+---@param source string
+---@return table[]
+function M.docs(source)
+  local toks = tokenize(source)
+  local comments = lineComments(toks)
+  local code = {}
+  for _, t in ipairs(toks) do
+    if t.type ~= 'comment' and t.type ~= 'longcomment' then code[#code + 1] = t end
+  end
+  local publicFns, aliases = scan(code, function() end)
+  local list = {}
+  local function entry(line, name, params, isMethod, target)
+    local doc = {}
+    for _, d in ipairs(docBlock(comments, line)) do doc[#doc + 1] = d.text end
+    list[#list + 1] = { name = name, line = line, params = params, isMethod = isMethod, target = target, doc = doc }
+  end
+  for _, fn in ipairs(publicFns) do entry(fn.line, fn.name, fn.params, fn.isMethod, nil) end
+  for _, a in ipairs(aliases) do
+    entry(a.line, a.name, a.fn and a.fn.params, a.fn and a.fn.isMethod or false, a.target)
+  end
+  table.sort(list, function(p, q) return p.line < q.line end)
+  return list
+end
+
 local function readFile(path)
   local f, err = io.open(path, 'rb')
   if not f then return nil, err end

@@ -2,6 +2,7 @@
 # The LÖVE checks of `make test`: a screenshot of every demo scene, made by the demo's
 # scripted mode under xvfb-run, into DIR (emptied first); DIR/ok marks a complete set, and
 # spec/demo_screenshot_spec.lua then checks each picture's colours where the shapes are.
+# Then each example game runs for a few frames under LÖVE (tools/love-examples.sh).
 # Installs Debian's love and xvfb when they are missing and this machine can (root +
 # apt-get). Where it cannot, it says so and the screenshot spec stays pending: `make test`
 # still passes on a machine without LÖVE, but .ci/run fails unless the screenshots ran.
@@ -29,6 +30,7 @@ if [ -n "$need" ]; then
   echo "   the screenshot spec stays pending"
   exit 0
 fi
-echo "== LÖVE checks: $(love --version 2>&1 | head -n 1), every demo scene drawn under xvfb-run"
+echo "== LÖVE checks: $(love --version 2>&1 | head -n 1), every demo scene drawn and every example run under xvfb-run"
 bash "$(dirname "$0")/screenshots.sh" "$dir" || exit 1
 touch "$dir/ok"
+bash "$(dirname "$0")/love-examples.sh" || exit 1

@@ -82,6 +82,7 @@ function MTV:scale(s)
   return self
 end
 
+--- Set `collider`, the outermost body of the first side; returns the MTV.
 ---@param collider table
 ---@return self
 function MTV:setCollider(collider)
@@ -89,6 +90,7 @@ function MTV:setCollider(collider)
   self.collider = collider
   return self
 end
+--- Set `collided`, the outermost body of the second side; returns the MTV.
 ---@param collided table
 ---@return self
 function MTV:setCollided(collided)
@@ -96,6 +98,7 @@ function MTV:setCollided(collided)
   self.collided = collided
   return self
 end
+--- Set `colliderShape`, the leaf shape of the first side; returns the MTV.
 ---@param shape strike.Shape
 ---@return self
 function MTV:setColliderShape(shape)
@@ -103,6 +106,7 @@ function MTV:setColliderShape(shape)
   self.colliderShape = shape
   return self
 end
+--- Set `collidedShape`, the leaf shape of the second side; returns the MTV.
 ---@param shape strike.Shape
 ---@return self
 function MTV:setCollidedShape(shape)
@@ -110,6 +114,8 @@ function MTV:setCollidedShape(shape)
   self.collidedShape = shape
   return self
 end
+--- Set `edgeIndex` (i: edge i of colliderShape gave the axis, -j: edge j of collidedShape, 0:
+--- neither); returns the MTV.
 ---@param index integer
 ---@return self
 function MTV:setEdgeIndex(index)
@@ -117,6 +123,7 @@ function MTV:setEdgeIndex(index)
   self.edgeIndex = index
   return self
 end
+--- Set `separating` (any true value as true, nil and false as false); returns the MTV.
 ---@param separating boolean
 ---@return self
 function MTV:setSeparating(separating)

@@ -1,6 +1,6 @@
 --- A capsule collider: one S.hapes.Capsule (a segment swept by a circle: exact, no seams).
---- (The seed's walkthrough builds a capsule from two circles and a rectangle; README,
---- "Making your own collider", keeps it as the example of a custom collider.)
+--- (The seed's walkthrough builds a capsule from two circles and a rectangle; docs/extending.md
+--- keeps it as the example of a custom collider.)
 local ROOT = (...):match('^(.-)%.colliders%.[^%.]+$')
 local Collider = require(ROOT .. '.colliders.Collider')
 local CapsuleShape = require(ROOT .. '.shapes.Capsule')

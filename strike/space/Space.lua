@@ -539,9 +539,9 @@ local function checkEvent(fname, event)
 end
 
 --- Call fn(a, b, record) for every pair that begins, stays or ends touching, during
---- collisions() (see the README for the order). Several callbacks run in the order they were
---- registered; one registered while collisions() runs its events gets them from the next
---- event on. Returns fn.
+--- collisions() (docs/space.md, "Sensors and events", gives the order). Several callbacks
+--- run in the order they were registered; one registered while collisions() runs its
+--- events gets them from the next event on. Returns fn.
 ---@param event string 'begin', 'stay' or 'end'
 ---@param fn function
 ---@return function fn

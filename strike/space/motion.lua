@@ -58,7 +58,7 @@ local protect, present, ownId = private.protect, private.present, private.ownId
 --- The skin: the most gap a move leaves between a body and what stops it, SKIN times the
 --- body's size (its radius; for a point, the length of its move). A stop that cannot rest
 --- exactly touching aims at half of it, so that the rounding of the coordinates keeps the gap
---- in (0, skin] (README, "Moving bodies"; limits.lua, the range of motion).
+--- in (0, skin] (docs/moving.md, "Moving bodies in a space"; limits.lua, the range of motion).
 Space.SKIN = 1e-6
 --- The range of motion: casts and moves reach at most REACH sizes of the body from the
 --- origin (limits.lua).
@@ -582,7 +582,7 @@ end
 -- then never meets again, so they end, and a move crosses any number of bodies.
 local MAX_LEGS = 64
 
--- An exact fit (README, "Moving bodies", exact fits). A leg that meets a body only because at
+-- An exact fit (docs/moving.md, exact fits). A leg that meets a body only because at
 -- its stop there the body overlaps the other's side by at most its skin (the gap a stop keeps
 -- from a wall slid along, say) goes on from that stop shifted across by the overlap, when
 -- S.triking finds the body there apart from every solid body around it (touching is not
@@ -656,10 +656,10 @@ end
 --- overlapping =}`: t the fraction of its leg at the touch, (nx, ny) the unit normal from
 --- other toward body, (touchX, touchY) the centroid where the body touched, (x, y) the
 --- contact point. The list and its records are reused by the next move. The filter and the
---- responses may add, remove, move and query other bodies (README, "The space"); a body
+--- responses may add, remove, move and query other bodies (docs/space.md); a body
 --- they remove is not met after; removing the body being moved ends the move there, and
 --- moving it is an error.
---- Options for characters (README, "Characters"): `up` (a direction {x, y} of any finite
+--- Options for characters (docs/moving.md, "Characters"): `up` (a direction {x, y} of any finite
 --- length but 0; default {0, -1}, up on a LÖVE screen), `slope` (the steepest walkable
 --- slope, radians: on walkable ground a slide keeps the motion across `up` and never slides
 --- down), `snap` (a move that does not go up ends on walkable ground within this distance
@@ -699,7 +699,7 @@ function Space:move(body, goalX, goalY, filterFn, opts)
   if opts ~= nil then upX, upY, walkCos, snapH, stepH = readOptions(F, opts) end
   -- (the game's code runs in the move when it has a filter or the space a pair filter)
   local game = filterFn ~= nil or self._pairFilter and true or false
-  local character = opts ~= nil -- (the walkable-ground slide: README, "Characters")
+  local character = opts ~= nil -- (the walkable-ground slide: docs/moving.md, "Characters")
   if game and not self._guard then
     -- (protected: through this same function, which then finds the guard up and goes on; the
     -- checks above pass again, the game's code having run in neither)

@@ -1,7 +1,8 @@
 --- The broadphase of S.pace (strike/space/Space.lua): a dynamic AABB tree. Chosen over
---- sort-and-sweep and a hierarchical grid by measurement (bench/broadphase.lua; README,
---- "The space"): it needs no cell size or bounds, its cost per frame follows the moving
---- bodies, and it answers box and ray queries in O(log n) besides the pairs.
+--- sort-and-sweep and a hierarchical grid by measurement (bench/broadphase.lua;
+--- docs/space.md, "Why a tree"): it needs no cell size or bounds, its cost per frame
+--- follows the moving bodies, and it answers box and ray queries in O(log n) besides the
+--- pairs.
 ---
 --- Design (ideas from Box2D's b2DynamicTree and broad phase, E. Catto, v2.4 and v3; no
 --- code taken):

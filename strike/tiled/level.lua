@@ -1,7 +1,7 @@
---- S.tiled: a Tiled map's collidable objects and tiles as bodies in a space (README, "Levels
---- from Tiled"). This file walks the layers and assembles the level; strike/tiled/map.lua
---- reads the format, strike/tiled/shapes.lua places the objects and tiles, and
---- strike/tiled/merge.lua merges a tile layer's full-square tiles into regions.
+--- S.tiled: a Tiled map's collidable objects and tiles as bodies in a space (docs/tiled.md).
+--- This file walks the layers and assembles the level; strike/tiled/map.lua reads the format,
+--- strike/tiled/shapes.lua places the objects and tiles, and strike/tiled/merge.lua merges a
+--- tile layer's full-square tiles into regions.
 ---
 --- What collides: a layer, object or tileset tile whose custom property `collidable` is
 --- true (the convention of Simple-Tiled-Implementation's plugins), the nearest definition
@@ -470,7 +470,7 @@ local function checkArguments(tmap, space, opts)
   return named
 end
 
---- Load a Tiled map into a space (README, "Levels from Tiled"): every collidable object and
+--- Load a Tiled map into a space (docs/tiled.md): every collidable object and
 --- tile as a body, in map order. Returns the level {bodies =, byId =, objectOf =, space =}
 --- (level:remove() takes its bodies out again). An error names the layer and object or tile
 --- at fault, and leaves the space as it was.

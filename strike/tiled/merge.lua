@@ -5,7 +5,7 @@
 --- A region is a Collider of axis-aligned rectangles whose shared faces are marked as seams
 --- (`_seams`, strike/base/VertexShape.lua): the same mechanism that makes the pieces of an
 --- S.trikers.Concave one solid. Why that and not the alternatives (each failure below is shown
---- in spec/tiled_tiles_spec.lua, "the alternatives"; the README, "Levels from Tiled", gives
+--- in spec/tiled_tiles_spec.lua, "the alternatives"; docs/tiled.md gives
 --- the cost of large regions):
 ---   * chains around the outlines (S.trikers.Chain loops, holes reversed) are ghost-free but
 ---     are surfaces, not solids: a body whose centre is inside passes through, containsPoint
