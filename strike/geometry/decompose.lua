@@ -402,6 +402,25 @@ local function closeVertices(X, Y, m)
   return nil
 end
 
+-- Up to this many vertices, prepare first tests every pair of non-adjacent edges: when none
+-- meets, neither would any pair closeVertices and the sweeps test (they test such pairs with
+-- segmentsMeet, and report only one that meets), so their answer, none, is known. Only when
+-- a pair meets do they run, for the same answer as always (the same pair in the error). A
+-- few vertices' pairs cost less than the sweeps, whose skip lists, sorts and closures a
+-- small polygon (a level's) pays for in full, and whose many paths LuaJIT compiles anew
+-- (the first load of a level).
+local FEW = 32
+
+--- Do two non-adjacent edges of the outline meet (segmentsMeet)? Every pair is tested.
+local function anyMeet(X, Y, m)
+  for i = 1, m - 2 do
+    for j = i + 2, i == 1 and m - 1 or m do
+      if segmentsMeet(X, Y, i, i + 1, j, j % m + 1) then return true end
+    end
+  end
+  return false
+end
+
 --- Clean and validate the outline.
 --- Returns the scaled working coordinates X, Y (1..m, counter-clockwise, no duplicate or
 --- collinear points), the input index of each working vertex, m and the scale; or nil, err.
@@ -479,9 +498,12 @@ local function prepare(xs, ys, n)
   end
 
   -- non-adjacent edges that cross or touch; edge k runs from input vertex k to the next kept one
-  local ei, ej = closeVertices(X, Y, m)
-  if not ei then ei, ej = crossingSweep(X, Y, m, X, Y) end
-  if not ei then ei, ej = crossingSweep(Y, X, m, X, Y) end
+  local ei, ej
+  if m > FEW or anyMeet(X, Y, m) then
+    ei, ej = closeVertices(X, Y, m)
+    if not ei then ei, ej = crossingSweep(X, Y, m, X, Y) end
+    if not ei then ei, ej = crossingSweep(Y, X, m, X, Y) end
+  end
   if ei then
     if id[ei] > id[ej] then ei, ej = ej, ei end
     return nil, ('outline intersects itself (edges %d and %d)'):format(id[ei], id[ej])
