@@ -139,6 +139,21 @@ function Collider._alloc()
   return { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 }
 end
 
+--- (internal) A collider holding the shapes and colliders of `parts` (a list, which becomes
+--- its list of children), for strike's own constructors: what Collider(parts[1], parts[2],
+--- ...) makes, without Collider:add's checks, which such members pass by construction (each
+--- new, built by strike, in no collider and no space, and given once).
+---@param parts table
+---@return strike.Collider
+function Collider._of(parts)
+  local self = setmetatable(Collider._alloc(), Collider)
+  parts[0] = self -- (slot 0: the list's owner, see childrenOf)
+  self._shapes = parts
+  startCaches(self)
+  for i = 1, #parts do parts[i]._parent = self end
+  return self
+end
+
 -- The structure changed: clear every flag here and on every enclosing collider, up to the
 -- root (the leaf lists of the colliders between may be stale already: see the cache
 -- protocol), and, when the walk reaches a root in a space, queue it there, as Shape:_touch

@@ -48,12 +48,11 @@ function Level:remove()
   return self
 end
 
--- A body from its parts: the one collider, or a Collider holding them.
+-- A body from its parts (shapes and colliders just built): the one collider, or a Collider
+-- holding them.
 local function bodyOf(parts)
-  if #parts == 1 and parts[1]:is(Collider) then return parts[1] end
-  local body = Collider()
-  for i = 1, #parts do body:add(parts[i]) end
-  return body
+  if #parts == 1 and parts[1]._shapes then return parts[1] end
+  return Collider._of(parts)
 end
 
 -- Run build(...) for `where`: an error of strike.tiled's own goes on as it is (it names its

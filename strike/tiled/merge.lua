@@ -200,7 +200,7 @@ end
 ---@return strike.Collider
 ---@return integer tiles
 function Builder:body(region, offx, offy, gw, gh)
-  local body, tiles = Collider(), 0
+  local rects, tiles = {}, 0
   for i = 1, #region do
     local q = region[i]
     local c0, r0, c1, r1, k = self.x0[q], self.y0[q], self.x1[q], self.y1[q], self.key[q]
@@ -215,9 +215,9 @@ function Builder:body(region, offx, offy, gw, gh)
       -- of a row never touch)
       rect._seams = { seam(t, c0, c1, true), false, seam(b, c0, c1, false), false }
     end
-    body:add(rect)
+    rects[i] = rect
   end
-  return body, tiles
+  return Collider._of(rects), tiles
 end
 
 --- The rectangle q: its columns c0 to c1 and rows r0 to r1 (ends exclusive) and its key.
