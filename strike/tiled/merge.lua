@@ -33,6 +33,18 @@ local Collider = require(ROOT .. '.colliders.Collider')
 
 local M = {}
 
+-- LuaJIT runs this file in its interpreter (jit.off, for this chunk and every function in
+-- it), as strike/geometry/decompose.lua: a level's tiles pass through here once, and on
+-- random tiles its loops take a different path at nearly every branch. Compiled, it made
+-- two thirds of the traces of S.tiled's bench map (196 of 300 for the tiles), and with them
+-- the first load overflowed the standalone interpreter's 512 KB of machine code and flushed
+-- every trace. Interpreted, in 8 fresh processes each (ms, min-median-max): the tiles
+-- 39.7-41.3-43.8 -> 36.7-37.4-44.5, the whole map 76.5-83.4-124.0 -> 75.1-77.2-102.3 under
+-- LÖVE's limits and 80.6-89.2-117.1 -> 75.3-75.8-88.2 under the standalone ones (609 -> 412
+-- traces, no flush). The rectangles it builds are compiled as usual.
+local jit = rawget(_G, 'jit')
+if jit then jit.off(true, true) end
+
 local Builder = {}
 Builder.__index = Builder
 
