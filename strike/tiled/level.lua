@@ -55,16 +55,21 @@ local function bodyOf(parts)
   return Collider._of(parts)
 end
 
--- Run build(...) for `where`: an error of strike.tiled's own goes on as it is (it names its
--- place already); any other (a constructor's: strike.Concave refusing a polygon that crosses
--- itself) is raised again naming `where` first.
+-- The error `err` of building something for `where`, raised again: an error of
+-- strike.tiled's own as it is (it names its place already); any other (a constructor's:
+-- strike.Concave refusing a polygon that crosses itself) naming `where` first.
+local function raise(where, err)
+  if type(err) == 'string' and not err:find(map.FNAME .. ': ', 1, true) then
+    fail(where, (err:gsub('^.-:%d+: ', '', 1)))
+  end
+  error(err, 0)
+end
+
+-- Run build(...) for `where`, raising its error as `raise` does.
 local function protected(where, build, ...)
   local ok, res, more = pcall(build, ...)
   if ok then return res, more end
-  if type(res) == 'string' and not res:find(map.FNAME .. ': ', 1, true) then
-    fail(where, (res:gsub('^.-:%d+: ', '', 1)))
-  end
-  error(res, 0)
+  raise(where, res)
 end
 
 local function record(out, body, obj, rec)
@@ -106,9 +111,9 @@ local function addTileParts(parts, P, tile, tw, th, rec, where)
     if type(child) ~= 'table' then
       fail(where, ('the tile\'s collision shape #%d must be an object table, got %s'):format(i, describe(child)))
     end
-    local cwhere = where .. ', collision shape ' .. map.objectName(child, i)
+    local cwhere = map.text(where) .. ', collision shape ' .. map.objectName(child, i)
     local kind = shapes.kind(child, cwhere)
-    cwhere = where .. ', collision shape ' .. map.objectName(child, i, kind)
+    cwhere = map.text(where) .. ', collision shape ' .. map.objectName(child, i, kind)
     if kind == 'tile' then fail(cwhere, 'a tile\'s collision shape cannot be a tile (it has a gid)') end
     local own = properties(child.properties, cwhere)
     if own.collidable ~= false and (kind ~= 'text' or own.collidable == true) then
@@ -136,14 +141,15 @@ local function loadObjects(entry, sets, out, tileRecs)
   if objs == nil then return end
   if type(objs) ~= 'table' then fail(entry.where, ('objects must be a list, got %s'):format(describe(objs))) end
   local T = translation(entry.offx, entry.offy)
+  local place = map.place(entry.where) -- (each object's name in errors, written only for one)
   for i = 1, #objs do
     local obj = objs[i]
     if type(obj) ~= 'table' then
       fail(entry.where, ('objects[%d] must be an object table, got %s'):format(i, describe(obj)))
     end
-    local where = entry.where .. ', ' .. map.objectName(obj, i)
+    local where = map.at(place, obj, i, nil)
     local kind = shapes.kind(obj, where)
-    where = entry.where .. ', ' .. map.objectName(obj, i, kind)
+    map.at(place, obj, i, kind)
     local id = obj.id
     if id ~= nil then number(id, where, 'id') end
     local own = properties(obj.properties, where)
@@ -393,8 +399,8 @@ local function loadTiles(entry, tmap, sets, out, tileRecs)
       local region = regions[q]
       local c0, r0, _, _, key = builder:rect(region[1])
       if r0 > r or (r0 == r and c0 > c) then return end
-      local rwhere = ('%s, the region of tiles from column %d, row %d'):format(where, c0, r0)
-      local body, count = protected(rwhere, builder.body, builder, region, offx, offy, gw, gh)
+      local ok, body, count = pcall(builder.body, builder, region, offx, offy, gw, gh)
+      if not ok then raise(('%s, the region of tiles from column %d, row %d'):format(where, c0, r0), body) end
       record(out, body, tileObject(gidAt(c0, r0), c0, r0, count), keyRec[key])
       q = q + 1
     end
