@@ -384,7 +384,7 @@ local function loadTiles(entry, tmap, sets, out, tileRecs)
     end
     if runKey > 0 then builder:run(runStart, c0 + count, runKey) end
   end)
-  local regions = builder:finish()
+  local nreg = builder:finish()
 
   -- the bodies in map order: by their first cell, row by row. The regions come in that
   -- order (merge: by their first rectangle), and so do the cells with bodies of their own:
@@ -393,13 +393,12 @@ local function loadTiles(entry, tmap, sets, out, tileRecs)
     local ts, lid, tile = tileOf(sets, (flags(gid)), where, gid)
     return { layer = layer, tile = tile, tileset = ts.src, id = lid, gid = gid, x = c, y = r, tiles = count }
   end
-  local nreg, q = #regions, 1
+  local q = 1
   local function regionsBefore(r, c) -- (every region whose first cell comes before (c, r))
     while q <= nreg do
-      local region = regions[q]
-      local c0, r0, _, _, key = builder:rect(region[1])
+      local c0, r0, _, _, key = builder:rect(builder:first(q))
       if r0 > r or (r0 == r and c0 > c) then return end
-      local ok, body, count = pcall(builder.body, builder, region, offx, offy, gw, gh)
+      local ok, body, count = pcall(builder.body, builder, q, offx, offy, gw, gh)
       if not ok then raise(('%s, the region of tiles from column %d, row %d'):format(where, c0, r0), body) end
       record(out, body, tileObject(gidAt(c0, r0), c0, r0, count), keyRec[key])
       q = q + 1
