@@ -366,15 +366,20 @@ local function loadTiles(entry, tmap, sets, out, tileRecs)
 
   local builder = merge.new()
   local own, nown = {}, 0 -- the cells with bodies of their own: col, row, gid
+  -- (a stretch's runs are handed to the builder together: merge.lua runs interpreted, and a
+  -- call into it for each run kept LuaJIT from compiling this loop)
+  local from, to, keys = {}, {}, {}
   cells(function(r, c0, data, base, count)
-    builder:row(r) -- (a row met again, from its next chunk, continues)
-    local runKey, runStart = 0, 0
+    local runKey, runStart, nrun = 0, 0, 0
     for i = 1, count do
       local gid = data[base + i]
       local k = class[gid]
       if k == nil then k = classify(gid, c0 + i - 1, r) end
       if k ~= runKey then
-        if runKey > 0 then builder:run(runStart, c0 + i - 1, runKey) end
+        if runKey > 0 then
+          nrun = nrun + 1
+          from[nrun], to[nrun], keys[nrun] = runStart, c0 + i - 1, runKey
+        end
         runKey, runStart = k, c0 + i - 1
       end
       if k < 0 then
@@ -382,7 +387,11 @@ local function loadTiles(entry, tmap, sets, out, tileRecs)
         nown = nown + 3
       end
     end
-    if runKey > 0 then builder:run(runStart, c0 + count, runKey) end
+    if runKey > 0 then
+      nrun = nrun + 1
+      from[nrun], to[nrun], keys[nrun] = runStart, c0 + count, runKey
+    end
+    builder:runs(r, from, to, keys, nrun) -- (a row met again, from its next chunk, continues)
   end)
   local nreg = builder:finish()
 

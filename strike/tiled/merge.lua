@@ -51,7 +51,7 @@ local Builder = {}
 Builder.__index = Builder
 
 --- A new, empty region builder. Feed it the runs of each row (rows in increasing order, each
---- row's runs in increasing column order) with row, run and finish; then read its regions.
+--- row's runs in increasing column order) with runs, then finish; then read its regions.
 ---@return table
 function M.new()
   return setmetatable({
@@ -151,28 +151,31 @@ local function endRow(self)
   self.pn, self.prow, self.cn = cn, self.crow, 0
 end
 
---- Start row r (rows in increasing order; a row skipped is a row without solid tiles). The
---- current row again goes on with it (its next chunk).
+--- Runs of solid cells of row r (rows in increasing order; a row skipped is a row without
+--- solid tiles): run i is columns c0s[i] to c1s[i] - 1, of the key keys[i] > 0, for i = 1 to
+--- n, in increasing column order. The current row again goes on with them (its next chunk),
+--- and a run that starts where the last one ended, with its key, continues it (runs from two
+--- chunks).
 ---@param r integer
-function Builder:row(r)
-  if r == self.crow then return end
-  endRow(self)
-  self.crow = r
-end
-
---- A run of solid cells of one key in the current row: columns c0 to c1 - 1. A run that
---- starts where the last one ended, with its key, continues it (runs from two chunks).
----@param c0 integer
----@param c1 integer
----@param key integer > 0
-function Builder:run(c0, c1, key)
-  local cn = self.cn
-  if cn > 0 and self.cc1[cn] == c0 and self.ckey[cn] == key then
-    self.cc1[cn] = c1
-    return
+---@param c0s integer[]
+---@param c1s integer[]
+---@param keys integer[]
+---@param n integer
+function Builder:runs(r, c0s, c1s, keys, n)
+  if r ~= self.crow then
+    endRow(self)
+    self.crow = r
   end
-  cn = cn + 1
-  self.cc0[cn], self.cc1[cn], self.ckey[cn] = c0, c1, key
+  local cc0, cc1, ckey, cn = self.cc0, self.cc1, self.ckey, self.cn
+  for i = 1, n do
+    local c0, c1, key = c0s[i], c1s[i], keys[i]
+    if cn > 0 and cc1[cn] == c0 and ckey[cn] == key then
+      cc1[cn] = c1
+    else
+      cn = cn + 1
+      cc0[cn], cc1[cn], ckey[cn] = c0, c1, key
+    end
+  end
   self.cn = cn
 end
 
