@@ -225,6 +225,23 @@ describe('Collider._of (strike\'s constructors: a collider from a list of new me
     assert.equals(a:getShapeCount(), b:getShapeCount())
   end)
 
+  it('is how Chain and Concave hold their members: as Collider.new and add would', function()
+    local cases = { { T.Chain(0, 0, 4, 0, 4, 3, 9, 3), 3, { 0, 0, 9, 3 } },
+      { T.Chain({ 0, 0, 4, 0, 4, 3 }, true), 3, { 0, 0, 4, 3 } },
+      { T.Concave(0, 0, 4, 0, 4, 4, 2, 1, 0, 4), 3, { 0, 0, 4, 4 } } }
+    for _, case in ipairs(cases) do
+      local c = case[1]
+      assert.equals(case[2], select('#', c:unpack()))
+      local ref = setmetatable(T.Collider._alloc(), getmetatable(c))
+      T.Collider.new(ref)
+      ref._loop = c._loop
+      for _, m in ipairs({ c:unpack() }) do ref:add(m:copy()) end
+      assert.equals(state(ref), state(c))
+      nearList({ c:getBounds() }, case[3])
+      nearList({ ref:getBounds() }, case[3])
+    end
+  end)
+
   it('takes the list as its children\'s: the members belong to it', function()
     local list = members()
     local c = T.Collider._of(list)

@@ -315,9 +315,7 @@ function M.add(out, obj, kind, P, oneway, where)
     if oneway then
       part = Chain(flat(P, xs, ys, n, mirrored))
     else
-      part = Collider()
-      part:add(Chain(flat(P, xs, ys, n, false)))
-      part:add(Chain(flat(P, xs, ys, n, true)))
+      part = Collider._of({ Chain(flat(P, xs, ys, n, false)), Chain(flat(P, xs, ys, n, true)) })
     end
   end
   out[#out + 1] = part
