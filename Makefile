@@ -53,9 +53,10 @@ rockspec-check:
 	@bash tools/rockspec-check.sh $(VMS)
 
 # Benchmarks, not part of test: bench/run.lua, bench/move.lua, bench/movers.lua and
-# bench/tiled.lua (S.tiled's load time) under each of BENCH_VMS (bench/bench.sh), tables
-# printed and saved to bench/results/<vm>.csv, move-<vm>.csv, movers-<vm>.csv and
-# tiled-<vm>.csv. STRIKE_PEERS=/path/to/peers adds the peers found there.
+# bench/tiled.lua (S.tiled's first load in fresh processes) under each of BENCH_VMS
+# (bench/bench.sh), tables printed and saved to bench/results/<vm>.csv, move-<vm>.csv,
+# movers-<vm>.csv and tiled-<vm>.csv (LuaJIT: also tiled-luajit-stock.csv, the standalone
+# limits). STRIKE_PEERS=/path/to/peers adds the peers found there.
 BENCH_VMS ?= luajit lua5.4
 
 bench:

@@ -10,7 +10,8 @@
 # Runs `bench/run.lua --save`, then `bench/move.lua --save` (space:move beside bump's and
 # slick's world:move), then `bench/movers.lua --save` (every body moving; on LuaJIT with LÖVE's
 # JIT limits and with the stock ones), then `bench/tiled.lua --save` (S.tiled loading a 200 x
-# 200 map, 40 % solid, with 1,000 objects), under each VM in turn (never in parallel, so that
+# 200 map, 40 % solid, with 1,000 objects, its first load in fresh processes; on LuaJIT with
+# both limits too), under each VM in turn (never in parallel, so that
 # runs do not share the CPUs), prints each VM's tables and writes bench/results/<vm>.csv,
 # move-<vm>.csv, movers-<vm>.csv and tiled-<vm>.csv. Progress goes to stderr. Fails when a VM
 # is missing or its run fails; the other VMs still run.
@@ -33,8 +34,10 @@ for vm in ${BENCH_VMS:-luajit lua5.4}; do
   # shellcheck disable=SC2086 # BENCH_ARGS is a list of options
   movers="$vm bench/movers.lua --save"
   if [ "$vm" = luajit ]; then movers="$movers --jit love && $vm bench/movers.lua --save --jit stock"; fi
+  tiled="$vm bench/tiled.lua --save"
+  if [ "$vm" = luajit ]; then tiled="$tiled --jit love && $vm bench/tiled.lua --save --jit stock"; fi
   if "$vm" bench/run.lua --save ${BENCH_ARGS:-} && "$vm" bench/move.lua --save && eval "$movers" \
-    && "$vm" bench/tiled.lua --save; then
+    && eval "$tiled"; then
     ran+=("$vm")
     echo "== $vm: $(( $(date +%s) - t0 )) s"
   else

@@ -191,6 +191,71 @@ describe('Collider', function()
   end)
 end)
 
+describe('Collider._of (strike\'s constructors: a collider from a list of new members)', function()
+  -- every field and slot, the members' too, as a table of strings (the tables by what they are)
+  local function state(c)
+    local out = {}
+    local function put(prefix, t)
+      for k, v in pairs(t) do
+        local s = type(v) == 'table' and (v == c and 'self' or v == c._shapes and 'shapes' or 'table') or tostring(v)
+        out[#out + 1] = prefix .. tostring(k) .. '=' .. s
+      end
+    end
+    put('', c)
+    put('shapes.', c._shapes)
+    for i, m in ipairs(c._shapes) do
+      out[#out + 1] = ('member %d parent is self: %s'):format(i, tostring(m._parent == c))
+    end
+    table.sort(out)
+    return table.concat(out, '\n')
+  end
+  local function members()
+    return { H.Rectangle(0, 0, 4, 2), H.Circle(5, 1, 1), T.Collider(H.Point(9, 9)),
+      T.Concave(0, 0, 4, 0, 4, 4, 2, 1, 0, 4) }
+  end
+
+  it('makes the collider Collider(...) makes from the same members', function()
+    local a, b = T.Collider(unpack(members())), T.Collider._of(members())
+    assert.equals(getmetatable(a), getmetatable(b))
+    assert.equals(state(a), state(b))
+    for _, c in ipairs({ a, b }) do c:getBounds(); c:getArea(); c:getShapeCount() end -- (and after the caches fill)
+    assert.equals(state(a), state(b))
+    nearList({ a:getBounds() }, { b:getBounds() })
+    near(a:getArea(), b:getArea())
+    assert.equals(a:getShapeCount(), b:getShapeCount())
+  end)
+
+  it('is how Chain and Concave hold their members: as Collider.new and add would', function()
+    local cases = { { T.Chain(0, 0, 4, 0, 4, 3, 9, 3), 3, { 0, 0, 9, 3 } },
+      { T.Chain({ 0, 0, 4, 0, 4, 3 }, true), 3, { 0, 0, 4, 3 } },
+      { T.Concave(0, 0, 4, 0, 4, 4, 2, 1, 0, 4), 3, { 0, 0, 4, 4 } } }
+    for _, case in ipairs(cases) do
+      local c = case[1]
+      assert.equals(case[2], select('#', c:unpack()))
+      local ref = setmetatable(T.Collider._alloc(), getmetatable(c))
+      T.Collider.new(ref)
+      ref._loop = c._loop
+      for _, m in ipairs({ c:unpack() }) do ref:add(m:copy()) end
+      assert.equals(state(ref), state(c))
+      nearList({ c:getBounds() }, case[3])
+      nearList({ ref:getBounds() }, case[3])
+    end
+  end)
+
+  it('takes the list as its children\'s: the members belong to it', function()
+    local list = members()
+    local c = T.Collider._of(list)
+    assert.equals(list, c._shapes)
+    assert.equals(4, select('#', c:unpack()))
+    raisesAt(function() T.Collider(list[1]) end, 'strike.Collider:add: argument 1 already belongs to a collider')
+    local s = S.pace()
+    s:add(c)
+    assert.equals(0, #s:queryPoint(6.6, 1))
+    c:translate(1, 0) -- (a change reaches the space as for any collider)
+    assert.equals(1, #s:queryPoint(6.6, 1))
+  end)
+end)
+
 describe('Collider:consolidate', function()
   it('merges adjacent convex pieces whose union is convex', function()
     local c = T.Collider(H.Rectangle(0, 0, 10), H.Rectangle(10, 0, 10), H.Rectangle(20, 0, 10))

@@ -2,7 +2,7 @@ local decompose = require('strike.geometry.decompose')
 local PRNG = require('spec.helpers.prng')
 
 local abs, sqrt, max, min = math.abs, math.sqrt, math.max, math.min
-local cos, sin, pi = math.cos, math.sin, math.pi
+local cos, sin, pi, floor = math.cos, math.sin, math.pi, math.floor
 
 --- Outline from a flat list {x1, y1, x2, y2, ...}.
 local function outline(flat)
@@ -721,6 +721,47 @@ describe('strike.geometry.decompose', function()
         end
       end
       assert(near >= 100 and far >= 40, ('seed %s: %d near and %d far cases'):format(tostring(seed), near, far))
+    end)
+
+    it('a crossing or a touch between any two edges, at 5 to 34 vertices (every pair tested up to 32)', function()
+      -- (decompose tests every pair of edges of an outline of up to 32 vertices before its
+      -- sweeps, which then run only when a pair meets: the pairs of every place along the
+      -- outline, on both sides of that count, must be found)
+      for _, m in ipairs({ 5, 6, 9, 31, 32, 33, 34 }) do
+        local function gon(k)
+          local a = 2 * pi * (k - 1) / m
+          return cos(a), sin(a)
+        end
+        for k = 1, m do
+          -- vertices k and k + 1 of a regular m-gon swapped: edges k - 1 and k + 1 cross
+          local flat = {}
+          for i = 1, m do
+            local j = i == k and k % m + 1 or i == k % m + 1 and k or i
+            push(flat, gon(j))
+          end
+          local a, b = (k + m - 2) % m + 1, k % m + 1
+          if a > b then a, b = b, a end
+          rejects(('^outline intersects itself %%(edges %d and %d%%)$'):format(a, b), flat)
+          -- vertex k moved onto the middle of the edge j across from it: the edges k - 1 and k
+          -- touch edge j (either pair may be named)
+          if m >= 6 then
+            local j = (k + floor(m / 2) - 1) % m + 1
+            local jx, jy = gon(j)
+            local kx, ky = gon(j % m + 1)
+            flat = {}
+            for i = 1, m do
+              if i == k then push(flat, (jx + kx) / 2, (jy + ky) / 2) else push(flat, gon(i)) end
+            end
+            local xs, ys, n = outline(flat)
+            local pieces, err = decompose.decompose(xs, ys, n)
+            local e1, e2 = tostring(err):match('^outline intersects itself %(edges (%d+) and (%d+)%)$')
+            assert(not pieces and e1, ('%d-gon, vertex %d on edge %d: got %s'):format(m, k, j, tostring(err)))
+            local named = { [tonumber(e1)] = true, [tonumber(e2)] = true }
+            assert(named[j] and (named[(k + m - 2) % m + 1] or named[k]),
+              ('%d-gon, vertex %d on edge %d: named edges %s and %s'):format(m, k, j, e1, e2))
+          end
+        end
+      end
     end)
 
     it('a bow-tie', function()

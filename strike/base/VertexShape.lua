@@ -517,8 +517,29 @@ function VertexShape:_onSeams(px, py)
   return false
 end
 
--- _seamOf sorts up to this many parts by insertion, more by table.sort.
+-- _seamOf sorts up to this many parts by insertion, more by table.sort (sortMany).
 local SEAM_SORT = 16
+
+-- Many parts (the bar of a comb under its teeth, which come in any order): the insertion
+-- sort would be quadratic, half of a 2,500-tooth comb's Concave on Lua 5.1-5.4. The same
+-- order, stable as it is: the parts' numbers sorted by start, then by number. (A function of
+-- its own: its closure would make LuaJIT close upvalues on every return of _seamOf, which it
+-- does not compile.)
+local function sortMany(parts, np)
+  local k, idx, copy = np / 2, {}, {}
+  for j = 1, k do idx[j] = j end
+  table.sort(idx, function(a, b)
+    local sa, sb = parts[2 * a - 1], parts[2 * b - 1]
+    if sa ~= sb then return sa < sb end
+    return a < b
+  end)
+  for j = 1, np do copy[j] = parts[j] end
+  for j = 1, k do
+    local o = idx[j]
+    parts[2 * j - 1], parts[2 * j] = copy[2 * o - 1], copy[2 * o]
+  end
+  return parts
+end
 
 --- (internal) A face's seam from the seam parts found on it: `parts` (nil when none; flat
 --- fractions lo, hi of the face, `np` of them, in any order) on a face `len` long, with the
@@ -544,23 +565,9 @@ function VertexShape._seamOf(parts, np, len, tol)
     end
     return parts
   end
-  -- Many parts (the bar of a comb under its teeth, which come in any order): the insertion
-  -- sort would be quadratic, half of a 2,500-tooth comb's Concave on Lua 5.1-5.4. The same
-  -- order, stable as it is: the parts' numbers sorted by start, then by number.
-  local k, idx, copy = np / 2, {}, {}
-  for j = 1, k do idx[j] = j end
-  table.sort(idx, function(a, b)
-    local sa, sb = parts[2 * a - 1], parts[2 * b - 1]
-    if sa ~= sb then return sa < sb end
-    return a < b
-  end)
-  for j = 1, np do copy[j] = parts[j] end
-  for j = 1, k do
-    local o = idx[j]
-    parts[2 * j - 1], parts[2 * j] = copy[2 * o - 1], copy[2 * o]
-  end
-  return parts
+  return sortMany(parts, np)
 end
+
 local seamOf = VertexShape._seamOf
 
 -- _seamsFrom tests every face against every source face up to this many pairs; above it (a

@@ -75,17 +75,18 @@ function Chain:new(...)
   end
   for i = 1, loop and m or m - 1 do -- (each segment's length within strike's limits: limits.lua)
     local j = i < m and i + 1 or 1
-    checkLength(FNAME, px[i], py[i], px[j], py[j], ('segment %d'):format(i))
+    checkLength(FNAME, px[i], py[i], px[j], py[j], i)
   end
-  Collider.new(self)
-  self._loop = loop
+  local segments = {}
   for i = 1, loop and m or m - 1 do
     local j = i < m and i + 1 or 1
     local h, k -- the ghost vertices' indices, nil at an open end
     if i > 1 then h = i - 1 elseif loop then h = m end
     if j < m then k = j + 1 elseif loop then k = 1 end
-    self:add(ChainSegment(px[i], py[i], px[j], py[j], h and px[h], h and py[h], k and px[k], k and py[k]))
+    segments[i] = ChainSegment(px[i], py[i], px[j], py[j], h and px[h], h and py[h], k and px[k], k and py[k])
   end
+  Collider._take(self, segments) -- (Collider.new(self, ...) without the checks: they are new)
+  self._loop = loop
 end
 
 --- Whether the chain is closed (its last point joined back to the first).

@@ -139,6 +139,31 @@ function Collider._alloc()
   return { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 }
 end
 
+--- (internal) For strike's own constructors: make `self`, a new instance of Collider or of
+--- a subclass whose constructor has not run Collider.new, hold the shapes and colliders of
+--- `parts` (a list, which becomes its list of children): what Collider.new(self, parts[1],
+--- parts[2], ...) makes, without Collider:add's checks, which such members pass by
+--- construction (each new, built by strike, in no collider and no space, and given once).
+--- Returns self.
+---@param self strike.Collider
+---@param parts table
+---@return strike.Collider
+function Collider._take(self, parts)
+  parts[0] = self -- (slot 0: the list's owner, see childrenOf)
+  self._shapes = parts
+  startCaches(self)
+  for i = 1, #parts do parts[i]._parent = self end
+  return self
+end
+
+--- (internal) A new Collider holding the shapes and colliders of `parts`, as Collider._take
+--- makes it: what Collider(parts[1], parts[2], ...) makes, without the checks.
+---@param parts table
+---@return strike.Collider
+function Collider._of(parts)
+  return Collider._take(setmetatable(Collider._alloc(), Collider), parts)
+end
+
 -- The structure changed: clear every flag here and on every enclosing collider, up to the
 -- root (the leaf lists of the colliders between may be stale already: see the cache
 -- protocol), and, when the walk reaches a root in a space, queue it there, as Shape:_touch

@@ -195,7 +195,7 @@ function Concave:new(...)
   if not pieces then check.fail('strike.Concave: ' .. err) end
   local seams, anySeam = nil, false
   if #pieces > 1 then seams, anySeam = pieceSeams(pieces, xs, ys, n) end
-  Collider.new(self)
+  local built = {}
   for i = 1, #pieces do
     -- (built as ConvexPolygon(pieces[i]) would be, but an error, such as a piece outside
     -- strike's limits on lengths, names strike.Concave)
@@ -217,8 +217,9 @@ function Concave:new(...)
       end
       if count > 0 then piece._seams = piece:_seamsFrom(src, count) end
     end
-    self:add(piece)
+    built[i] = piece
   end
+  Collider._take(self, built) -- (Collider.new(self, ...) without the checks: the pieces are new)
 end
 
 return Concave

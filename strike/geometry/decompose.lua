@@ -44,7 +44,21 @@ local hull = require(ROOT .. '.geometry.hull')
 
 local decompose = {}
 
-local abs, sqrt, floor, max, min = math.abs, math.sqrt, math.floor, math.max, math.min
+-- LuaJIT runs this file in its interpreter (jit.off, for this chunk and every function in
+-- it). A decomposition runs once per outline and takes a different path at nearly every
+-- branch: compiled, it made more traces than it saved time. 200 random 32-vertex stars
+-- built in a fresh process took 567 ms and 6,566 traces, flushing the trace cache 10 times,
+-- under the standalone interpreter's limits (182 ms and 1,394 traces under LÖVE's);
+-- interpreted, 206 ms and 611 traces (166 ms under LÖVE's); 200 of 8 vertices 116 -> 64 ms
+-- (67 -> 43 under LÖVE's). make bench's outlines (three runs each, ms): 1,000-vertex
+-- random star 69-98 -> 25-32, at 10,000 vertices random star 348-421 -> 239-366, regular
+-- star 196-305 -> 189-272, comb 113-149 -> 130-173. And a level's outlines no longer flush a
+-- game's compiled code out of the trace cache. The constructors its pieces go to
+-- (ConvexPolygon) are compiled as usual.
+local jit = rawget(_G, 'jit')
+if jit then jit.off(true, true) end
+
+local abs, sqrt, floor, max = math.abs, math.sqrt, math.floor, math.max
 local HUGE = math.huge
 
 local DIST_EPS = 1e-12
@@ -95,55 +109,26 @@ end
 local function segDist2(px, py, ax, ay, bx, by)
   local ex, ey = bx - ax, by - ay
   px, py = px - ax, py - ay
-  local t = max(0, min(1, (px * ex + py * ey) / (ex * ex + ey * ey)))
-  local dx, dy = px - t * ex, py - t * ey
-  return dx * dx + dy * dy
-end
-
---- Do the segments a-b and c-d (no shared endpoint, nonzero lengths) cross or come within
---- DIST_EPS? Written with few branches (math.min and math.max compile to plain instructions):
---- LuaJIT compiles a side trace per hot path, and the sweeps call this from many places with
---- unpredictable outcomes; with a branch per test, a 10,000-vertex star spent most of its
---- time recompiling traces. The interpreters use segmentsMeetBranches (below).
-local function segmentsMeetMinMax(X, Y, a, b, c, d)
-  local ax, ay, bx, by, cx, cy, dx, dy = X[a], Y[a], X[b], Y[b], X[c], Y[c], X[d], Y[d]
-  -- bounding boxes apart by more than the tolerance
-  if max(min(cx, dx) - max(ax, bx), min(ax, bx) - max(cx, dx),
-    min(cy, dy) - max(ay, by), min(ay, by) - max(cy, dy)) > DIST_EPS then
-    return false
-  end
-  -- proper crossing: each segment's ends strictly on both sides of the other's line
-  local ex, ey, fx, fy = bx - ax, by - ay, dx - cx, dy - cy
-  local c1 = ex * (cy - ay) - ey * (cx - ax)
-  local c2 = ex * (dy - ay) - ey * (dx - ax)
-  local c3 = fx * (ay - cy) - fy * (ax - cx)
-  local c4 = fx * (by - cy) - fy * (bx - cx)
-  -- (a product underflowing to 0 means an end within 1e-150 of the other line: the distances
-  -- below see it)
-  if max(c1 * c2, c3 * c4) < 0 then return true end
-  return min(segDist2(cx, cy, ax, ay, bx, by), segDist2(dx, dy, ax, ay, bx, by),
-    segDist2(ax, ay, cx, cy, dx, dy), segDist2(bx, by, cx, cy, dx, dy)) <= DIST_EPS2
-end
-
---- segDist2 with branches for math.min and math.max (the same value).
-local function segDist2Branches(px, py, ax, ay, bx, by)
-  local ex, ey = bx - ax, by - ay
-  px, py = px - ax, py - ay
   local t = (px * ex + py * ey) / (ex * ex + ey * ey)
   if t < 0 then t = 0 elseif t > 1 then t = 1 end
   local dx, dy = px - t * ex, py - t * ey
   return dx * dx + dy * dy
 end
 
---- segmentsMeetMinMax's answer, for the interpreters (Lua 5.1-5.4), where each math.min or
---- math.max is a C function call: a branch for each (the largest of several numbers is above
---- a bound when one of them is; the smallest below it when one is), and one early answer.
---- When both ends of c-d lie on one side of a-b's line, farther than 2 * DIST_EPS from it
---- (c1 is that distance times |a-b|), all four distances exceed DIST_EPS by far more than
---- their rounding (about 1e-16 in the working coordinates), so that the distances would say
---- false. Most pairs the sweeps test are such near neighbours (the spikes of a star): the
---- decomposition of a 10,000-vertex random star runs 14% fewer instructions on Lua 5.2.
-local function segmentsMeetBranches(X, Y, a, b, c, d)
+--- Do the segments a-b and c-d (no shared endpoint, nonzero lengths) cross or come within
+--- DIST_EPS? Their boxes apart by more than the tolerance: no; each one's ends strictly on
+--- both sides of the other's line: yes; otherwise the distance of an end to the other
+--- segment decides. Written with branches, not math.min and math.max (C calls on Lua
+--- 5.1-5.4), and with one early answer: when both ends of c-d lie on one side of a-b's line,
+--- farther than 2 * DIST_EPS from it (c1 is that distance times |a-b|), all four distances
+--- exceed DIST_EPS by far more than their rounding (about 1e-16 in the working coordinates),
+--- so that the distances would say false. Most pairs the sweeps test are such near
+--- neighbours (the spikes of a star): the decomposition of a 10,000-vertex random star runs
+--- 14% fewer instructions on Lua 5.2 than with the calls and without that answer. (LuaJIT
+--- used a branch-free form of the same test while it compiled this file: the same answers,
+--- 3.6 million pairs at the tolerance's edges compared on every VM; interpreted, this one is
+--- faster there too: 2 million pairs placed near the tolerance give the same answers.)
+local function segmentsMeet(X, Y, a, b, c, d)
   local ax, ay, bx, by, cx, cy, dx, dy = X[a], Y[a], X[b], Y[b], X[c], Y[c], X[d], Y[d]
   -- bounding boxes apart by more than the tolerance
   local lo1, hi1, lo2, hi2 = ax, bx, cx, dx
@@ -154,7 +139,9 @@ local function segmentsMeetBranches(X, Y, a, b, c, d)
   if by < ay then lo1, hi1 = by, ay end
   if dy < cy then lo2, hi2 = dy, cy end
   if lo2 - hi1 > DIST_EPS or lo1 - hi2 > DIST_EPS then return false end
-  -- proper crossing: each segment's ends strictly on both sides of the other's line
+  -- proper crossing: each segment's ends strictly on both sides of the other's line (a
+  -- product underflowing to 0 means an end within 1e-150 of the other line: the distances
+  -- below see it)
   local ex, ey, fx, fy = bx - ax, by - ay, dx - cx, dy - cy
   local c1 = ex * (cy - ay) - ey * (cx - ax)
   local c2 = ex * (dy - ay) - ey * (dx - ax)
@@ -166,13 +153,11 @@ local function segmentsMeetBranches(X, Y, a, b, c, d)
     local near = 4 * DIST_EPS2 * (ex * ex + ey * ey)
     if c1 * c1 > near and c2 * c2 > near then return false end
   end
-  return segDist2Branches(cx, cy, ax, ay, bx, by) <= DIST_EPS2
-    or segDist2Branches(dx, dy, ax, ay, bx, by) <= DIST_EPS2
-    or segDist2Branches(ax, ay, cx, cy, dx, dy) <= DIST_EPS2
-    or segDist2Branches(bx, by, cx, cy, dx, dy) <= DIST_EPS2
+  return segDist2(cx, cy, ax, ay, bx, by) <= DIST_EPS2
+    or segDist2(dx, dy, ax, ay, bx, by) <= DIST_EPS2
+    or segDist2(ax, ay, cx, cy, dx, dy) <= DIST_EPS2
+    or segDist2(bx, by, cx, cy, dx, dy) <= DIST_EPS2
 end
-
-local segmentsMeet = rawget(_G, 'jit') and segmentsMeetMinMax or segmentsMeetBranches
 
 --- Vertex indices 1..m sorted by U, then V, then index: the order of a sweep along U (ties
 --- broken as if the sweep line were turned a little), and each vertex's rank in it.
@@ -402,6 +387,25 @@ local function closeVertices(X, Y, m)
   return nil
 end
 
+-- Up to this many vertices, prepare first tests every pair of non-adjacent edges: when none
+-- meets, neither would any pair closeVertices and the sweeps test (they test such pairs with
+-- segmentsMeet, and report only one that meets), so their answer, none, is known. Only when
+-- a pair meets do they run, for the same answer as always (the same pair in the error). A
+-- few vertices' pairs cost less than the sweeps, whose skip lists, sorts and closures a
+-- small polygon (a level's) pays for in full: a whole decomposition of an 8-vertex star
+-- 163 -> 92 us on Lua 5.4, of 32 vertices 776 -> 484.
+local FEW = 32
+
+--- Do two non-adjacent edges of the outline meet (segmentsMeet)? Every pair is tested.
+local function anyMeet(X, Y, m)
+  for i = 1, m - 2 do
+    for j = i + 2, i == 1 and m - 1 or m do
+      if segmentsMeet(X, Y, i, i + 1, j, j % m + 1) then return true end
+    end
+  end
+  return false
+end
+
 --- Clean and validate the outline.
 --- Returns the scaled working coordinates X, Y (1..m, counter-clockwise, no duplicate or
 --- collinear points), the input index of each working vertex, m and the scale; or nil, err.
@@ -479,9 +483,12 @@ local function prepare(xs, ys, n)
   end
 
   -- non-adjacent edges that cross or touch; edge k runs from input vertex k to the next kept one
-  local ei, ej = closeVertices(X, Y, m)
-  if not ei then ei, ej = crossingSweep(X, Y, m, X, Y) end
-  if not ei then ei, ej = crossingSweep(Y, X, m, X, Y) end
+  local ei, ej
+  if m > FEW or anyMeet(X, Y, m) then
+    ei, ej = closeVertices(X, Y, m)
+    if not ei then ei, ej = crossingSweep(X, Y, m, X, Y) end
+    if not ei then ei, ej = crossingSweep(Y, X, m, X, Y) end
+  end
   if ei then
     if id[ei] > id[ej] then ei, ej = ej, ei end
     return nil, ('outline intersects itself (edges %d and %d)'):format(id[ei], id[ej])

@@ -17,28 +17,11 @@ local function leftTurn(ox, oy, ax, ay, bx, by)
   return c > EPS * sqrt(ux * ux + uy * uy) * sqrt(vx * vx + vy * vy)
 end
 
---- The indices 1..n sorted by x, then y, then index (a total order: the result does not
---- depend on table.sort's choices). The hull's scan order, and decompose's sweep order.
----@param xs number[]
----@param ys number[]
----@param n integer
----@return integer[]
-function hull.order(xs, ys, n)
+-- hull.order for many points: table.sort with the total order. (A function of its own: the
+-- closure would make LuaJIT close upvalues on every return of hull.order, which it does not
+-- compile, and every trace through a small polygon's constructor would abort there.)
+local function orderMany(xs, ys, n)
   local idx = {}
-  if n <= 16 then -- (a few points, a polygon's: insertion sort, the same order without a closure)
-    for i = 1, n do
-      local x, y, j = xs[i], ys[i], i - 1
-      while j >= 1 do
-        local b = idx[j]
-        local xb = xs[b]
-        if xb < x or (xb == x and ys[b] <= y) then break end -- (b before i: equal points keep their order)
-        idx[j + 1] = b
-        j = j - 1
-      end
-      idx[j + 1] = i
-    end
-    return idx
-  end
   for i = 1, n do idx[i] = i end
   table.sort(idx, function(a, b)
     local xa, xb = xs[a], xs[b]
@@ -47,6 +30,30 @@ function hull.order(xs, ys, n)
     if ya ~= yb then return ya < yb end
     return a < b
   end)
+  return idx
+end
+
+--- The indices 1..n sorted by x, then y, then index (a total order: the result does not
+--- depend on table.sort's choices). The hull's scan order, and decompose's sweep order.
+---@param xs number[]
+---@param ys number[]
+---@param n integer
+---@return integer[]
+function hull.order(xs, ys, n)
+  if n > 16 then return orderMany(xs, ys, n) end
+  -- (a few points, a polygon's: insertion sort, the same order without a closure)
+  local idx = {}
+  for i = 1, n do
+    local x, y, j = xs[i], ys[i], i - 1
+    while j >= 1 do
+      local b = idx[j]
+      local xb = xs[b]
+      if xb < x or (xb == x and ys[b] <= y) then break end -- (b before i: equal points keep their order)
+      idx[j + 1] = b
+      j = j - 1
+    end
+    idx[j + 1] = i
+  end
   return idx
 end
 

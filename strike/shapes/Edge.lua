@@ -20,17 +20,20 @@ Edge._alloc = VertexShape._alloc2
 --- Shape:_checkNew makes on the shortest edge, with the same arithmetic), and not so long
 --- that its square nears overflow (beyond 4 * MAX_LENGTH; up to there Shape:_checkNew
 --- decides, on the radius). `fname` names the caller; `what` names the segment (default
---- 'length').
+--- 'length'; a number i: 'segment i').
 ---@param fname string
 ---@param x1 number
 ---@param y1 number
 ---@param x2 number
 ---@param y2 number
----@param what string|nil
+---@param what string|integer|nil
 function Edge._checkLength(fname, x1, y1, x2, y2, what)
   local dx, dy = (x2 + 0.0) - x1, (y2 + 0.0) - y1 -- (floats: integer differences wrap on Lua 5.3+)
   local len = limits.length(dx, dy)
   if dx - dx ~= 0 or dy - dy ~= 0 then len = huge end -- (the difference overflows)
+  if len >= MIN_LENGTH and len <= 4 * MAX_LENGTH then return end
+  -- (the name is written only for the error)
+  if type(what) == 'number' then what = ('segment %d'):format(what) end
   what = what or 'length'
   if len < MIN_LENGTH then
     fail(('%s: too small: its %s is %s, below %s, the smallest length strike accepts (its square must stay a'

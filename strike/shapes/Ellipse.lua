@@ -7,6 +7,12 @@ local ANGLE, SCALE = layout.ANGLE, layout.SCALE
 local badSelf, type = check.badSelf, type
 
 local sin, cos, pi, floor, max, min = math.sin, math.cos, math.pi, math.floor, math.max, math.min
+local xs, ys = {}, {} -- (the vertices, for the constructor: never kept)
+
+-- The largest ratio of the semi-axes for which the constructor takes its points as they are,
+-- without the hull (ConvexPolygon._safeConvex's range, too): the turn at each corner is then
+-- at least sin(2 pi / 64) / 16, about 0.006, against the hull's tolerance of 1e-10.
+local SAFE_RATIO = 16
 
 ---@class strike.Ellipse : strike.ConvexPolygon
 local Ellipse = ConvexPolygon:extend()
@@ -33,13 +39,25 @@ function Ellipse:new(x, y, a, b, n, angle)
     check.integer(n, 'strike.Ellipse', 'segment count', 3, 4096)
   end
   angle = check.optNumber(angle, 'strike.Ellipse', 'angle', 0)
-  local pts = {}
-  for k = 1, n do
-    local t = 2 * pi * (k - 1) / n
-    pts[2 * k - 1], pts[2 * k] = x + a * cos(t), y + b * sin(t)
-  end
   self._a, self._b, self._n = a, b, n
-  Ellipse.super.new(self, pts)
+  local lo, hi = min(a, b), max(a, b)
+  -- (edges at least 2 lo sin(pi / n) long, the image of a regular polygon's; and a turn at
+  -- every corner far above the hull's tolerance when the semi-axes are within SAFE_RATIO)
+  if hi <= SAFE_RATIO * lo and ConvexPolygon._safeConvex(x, y, n, 2 * lo * sin(pi / n), hi) then
+    -- (in positive winding from the first point: the hull would return them as they are)
+    for k = 1, n do
+      local t = 2 * pi * (k - 1) / n
+      xs[k], ys[k] = x + a * cos(t) + 0.0, y + b * sin(t) + 0.0
+    end
+    self:_fromConvex(xs, ys, n, 'strike.Ellipse')
+  else
+    local pts = {}
+    for k = 1, n do
+      local t = 2 * pi * (k - 1) / n
+      pts[2 * k - 1], pts[2 * k] = x + a * cos(t), y + b * sin(t)
+    end
+    Ellipse.super.new(self, pts)
+  end
   self:_placeCentroid(x, y) -- the exact centre
   if angle ~= 0 then self:rotate(angle) end
 end

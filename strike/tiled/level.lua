@@ -48,24 +48,28 @@ function Level:remove()
   return self
 end
 
--- A body from its parts: the one collider, or a Collider holding them.
+-- A body from its parts (shapes and colliders just built): the one collider, or a Collider
+-- holding them.
 local function bodyOf(parts)
-  if #parts == 1 and parts[1]:is(Collider) then return parts[1] end
-  local body = Collider()
-  for i = 1, #parts do body:add(parts[i]) end
-  return body
+  if #parts == 1 and parts[1]._shapes then return parts[1] end
+  return Collider._of(parts)
 end
 
--- Run build(...) for `where`: an error of strike.tiled's own goes on as it is (it names its
--- place already); any other (a constructor's: strike.Concave refusing a polygon that crosses
--- itself) is raised again naming `where` first.
+-- The error `err` of building something for `where`, raised again: an error of
+-- strike.tiled's own as it is (it names its place already); any other (a constructor's:
+-- strike.Concave refusing a polygon that crosses itself) naming `where` first.
+local function raise(where, err)
+  if type(err) == 'string' and not err:find(map.FNAME .. ': ', 1, true) then
+    fail(where, (err:gsub('^.-:%d+: ', '', 1)))
+  end
+  error(err, 0)
+end
+
+-- Run build(...) for `where`, raising its error as `raise` does.
 local function protected(where, build, ...)
   local ok, res, more = pcall(build, ...)
   if ok then return res, more end
-  if type(res) == 'string' and not res:find(map.FNAME .. ': ', 1, true) then
-    fail(where, (res:gsub('^.-:%d+: ', '', 1)))
-  end
-  error(res, 0)
+  raise(where, res)
 end
 
 local function record(out, body, obj, rec)
@@ -107,9 +111,9 @@ local function addTileParts(parts, P, tile, tw, th, rec, where)
     if type(child) ~= 'table' then
       fail(where, ('the tile\'s collision shape #%d must be an object table, got %s'):format(i, describe(child)))
     end
-    local cwhere = where .. ', collision shape ' .. map.objectName(child, i)
+    local cwhere = map.text(where) .. ', collision shape ' .. map.objectName(child, i)
     local kind = shapes.kind(child, cwhere)
-    cwhere = where .. ', collision shape ' .. map.objectName(child, i, kind)
+    cwhere = map.text(where) .. ', collision shape ' .. map.objectName(child, i, kind)
     if kind == 'tile' then fail(cwhere, 'a tile\'s collision shape cannot be a tile (it has a gid)') end
     local own = properties(child.properties, cwhere)
     if own.collidable ~= false and (kind ~= 'text' or own.collidable == true) then
@@ -137,14 +141,15 @@ local function loadObjects(entry, sets, out, tileRecs)
   if objs == nil then return end
   if type(objs) ~= 'table' then fail(entry.where, ('objects must be a list, got %s'):format(describe(objs))) end
   local T = translation(entry.offx, entry.offy)
+  local place = map.place(entry.where) -- (each object's name in errors, written only for one)
   for i = 1, #objs do
     local obj = objs[i]
     if type(obj) ~= 'table' then
       fail(entry.where, ('objects[%d] must be an object table, got %s'):format(i, describe(obj)))
     end
-    local where = entry.where .. ', ' .. map.objectName(obj, i)
+    local where = map.at(place, obj, i, nil)
     local kind = shapes.kind(obj, where)
-    where = entry.where .. ', ' .. map.objectName(obj, i, kind)
+    map.at(place, obj, i, kind)
     local id = obj.id
     if id ~= nil then number(id, where, 'id') end
     local own = properties(obj.properties, where)
@@ -361,15 +366,20 @@ local function loadTiles(entry, tmap, sets, out, tileRecs)
 
   local builder = merge.new()
   local own, nown = {}, 0 -- the cells with bodies of their own: col, row, gid
+  -- (a stretch's runs are handed to the builder together: merge.lua runs interpreted, and a
+  -- call into it for each run kept LuaJIT from compiling this loop)
+  local from, to, keys = {}, {}, {}
   cells(function(r, c0, data, base, count)
-    builder:row(r) -- (a row met again, from its next chunk, continues)
-    local runKey, runStart = 0, 0
+    local runKey, runStart, nrun = 0, 0, 0
     for i = 1, count do
       local gid = data[base + i]
       local k = class[gid]
       if k == nil then k = classify(gid, c0 + i - 1, r) end
       if k ~= runKey then
-        if runKey > 0 then builder:run(runStart, c0 + i - 1, runKey) end
+        if runKey > 0 then
+          nrun = nrun + 1
+          from[nrun], to[nrun], keys[nrun] = runStart, c0 + i - 1, runKey
+        end
         runKey, runStart = k, c0 + i - 1
       end
       if k < 0 then
@@ -377,9 +387,13 @@ local function loadTiles(entry, tmap, sets, out, tileRecs)
         nown = nown + 3
       end
     end
-    if runKey > 0 then builder:run(runStart, c0 + count, runKey) end
+    if runKey > 0 then
+      nrun = nrun + 1
+      from[nrun], to[nrun], keys[nrun] = runStart, c0 + count, runKey
+    end
+    builder:runs(r, from, to, keys, nrun) -- (a row met again, from its next chunk, continues)
   end)
-  local regions = builder:finish()
+  local nreg = builder:finish()
 
   -- the bodies in map order: by their first cell, row by row. The regions come in that
   -- order (merge: by their first rectangle), and so do the cells with bodies of their own:
@@ -388,14 +402,13 @@ local function loadTiles(entry, tmap, sets, out, tileRecs)
     local ts, lid, tile = tileOf(sets, (flags(gid)), where, gid)
     return { layer = layer, tile = tile, tileset = ts.src, id = lid, gid = gid, x = c, y = r, tiles = count }
   end
-  local nreg, q = #regions, 1
+  local q = 1
   local function regionsBefore(r, c) -- (every region whose first cell comes before (c, r))
     while q <= nreg do
-      local region = regions[q]
-      local c0, r0, _, _, key = builder:rect(region[1])
+      local c0, r0, _, _, key = builder:rect(builder:first(q))
       if r0 > r or (r0 == r and c0 > c) then return end
-      local rwhere = ('%s, the region of tiles from column %d, row %d'):format(where, c0, r0)
-      local body, count = protected(rwhere, builder.body, builder, region, offx, offy, gw, gh)
+      local ok, body, count = pcall(builder.body, builder, q, offx, offy, gw, gh)
+      if not ok then raise(('%s, the region of tiles from column %d, row %d'):format(where, c0, r0), body) end
       record(out, body, tileObject(gidAt(c0, r0), c0, r0, count), keyRec[key])
       q = q + 1
     end

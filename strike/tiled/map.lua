@@ -34,12 +34,40 @@ local M = {}
 
 M.FNAME = 'strike.tiled'
 
---- Raise `msg` about `where` (a layer, object or tile), at the line that called S.tiled.
----@param where string|nil nil: about the map itself
+--- How an error names a place: `where` itself when it is a string; an object's place
+--- (M.place) as 'layer "things", object 12 "door" (polygon)'.
+---@param where string|table
+---@return string
+function M.text(where)
+  if type(where) ~= 'table' then return where end
+  return where[1] .. ', ' .. M.objectName(where[2], where[3], where[4])
+end
+
+--- A place that names an object of a layer in errors (M.text), for the objects of the layer
+--- whose own place is `where`: M.at(place, obj, index, kind) moves it to each object in turn
+--- (kind nil until known), so that the name is written only when an error needs it.
+---@param where string the layer's place
+---@return table
+function M.place(where) return { where, false, 0, nil } end
+
+--- Move a place (M.place) to an object. Returns the place.
+---@param place table
+---@param obj table
+---@param index integer
+---@param kind string|nil
+---@return table
+function M.at(place, obj, index, kind)
+  place[2], place[3], place[4] = obj, index, kind
+  return place
+end
+
+--- Raise `msg` about `where` (a layer, object or tile: a string, or an object's place), at
+--- the line that called S.tiled.
+---@param where string|table|nil nil: about the map itself
 ---@param msg string
 function M.fail(where, msg)
   if where then
-    check.fail(('%s: %s: %s'):format(M.FNAME, where, msg))
+    check.fail(('%s: %s: %s'):format(M.FNAME, M.text(where), msg))
   end
   check.fail(('%s: %s'):format(M.FNAME, msg))
 end
@@ -47,7 +75,7 @@ local fail = M.fail
 
 --- `v` as a finite number, or an error naming `field` of `where`; nil gives `default`.
 ---@param v any
----@param where string|nil
+---@param where string|table|nil a place (map.text)
 ---@param field string
 ---@param default number|nil
 ---@return number
@@ -62,7 +90,7 @@ local number = M.number
 
 --- `v` as a whole number (a finite number with no fraction) from lo to hi.
 ---@param v any
----@param where string|nil
+---@param where string|table|nil a place (map.text)
 ---@param field string
 ---@param lo number
 ---@param hi number
@@ -152,7 +180,7 @@ end
 --- comma-separated string; false for a string of no names: every layer) and group (a whole
 --- number), each nil when not given. Other properties are the game's and are not read.
 ---@param props any
----@param where string
+---@param where string|table a place (map.text)
 ---@return table
 function M.properties(props, where)
   if props == nil then return M.NONE end
@@ -356,7 +384,7 @@ end
 --- without its flags (M.flags).
 ---@param sets table[]
 ---@param id number
----@param where string
+---@param where string|table a place (map.text)
 ---@param gid number the gid as given, for the message
 ---@return table tileset
 ---@return number localId
@@ -389,7 +417,7 @@ end
 
 --- A gid from a layer's data or an object, checked: a whole number from 0 to 2^32 - 1.
 ---@param gid any
----@param where string
+---@param where string|table a place (map.text)
 ---@return number
 function M.gid(gid, where)
   return whole(gid, where, 'gid', 0, F32 - 1)
@@ -399,7 +427,7 @@ end
 --- export; `imagewidth`, `imageheight` in JSON), the others the tileset's.
 ---@param ts table
 ---@param tile table|nil
----@param where string
+---@param where string|table a place (map.text)
 ---@return number w
 ---@return number h
 function M.tileSize(ts, tile, where)
@@ -413,7 +441,7 @@ end
 
 --- A tile's collision shapes (the objects drawn in Tiled's tile collision editor), or nil.
 ---@param tile table|nil
----@param where string
+---@param where string|table a place (map.text)
 ---@return table[]|nil
 function M.tileShapes(tile, where)
   if not tile then return nil end

@@ -26,22 +26,49 @@
 --- they would be one), a seam part of a face always ends at a corner of the region's outline,
 --- and two seam parts of one face never touch. Regions are the connected components of the
 --- rectangles (union-find over runs of consecutive rows that share a column and a key).
---- Everything is kept in flat arrays: no table per tile, one per rectangle with a seam.
+--- Everything is kept in flat arrays, indexed densely (by rectangle, by seam part, by region):
+--- no table per tile, per run or per region, and one per rectangle with a seam that is not a
+--- whole face.
 local ROOT = (...):match('^(.-)%.tiled%.[^%.]+$')
 local Rectangle = require(ROOT .. '.shapes.Rectangle')
 local Collider = require(ROOT .. '.colliders.Collider')
 
 local M = {}
 
+-- LuaJIT runs this file in its interpreter (jit.off, for this chunk and every function in
+-- it), as strike/geometry/decompose.lua: a level's tiles pass through here once, and on
+-- random tiles its loops take a different path at nearly every branch. Compiled, it made
+-- two thirds of the traces of S.tiled's bench map (196 of 300 for the tiles), and with them
+-- the first load overflowed the standalone interpreter's 512 KB of machine code and flushed
+-- every trace. Interpreted, in 8 fresh processes each (ms, min-median-max): the tiles
+-- 39.7-41.3-43.8 -> 36.7-37.4-44.5, the whole map 76.5-83.4-124.0 -> 75.1-77.2-102.3 under
+-- LÖVE's limits and 80.6-89.2-117.1 -> 75.3-75.8-88.2 under the standalone ones (609 -> 412
+-- traces, no flush). The rectangles it builds are compiled as usual.
+local jit = rawget(_G, 'jit')
+if jit then jit.off(true, true) end
+
 local Builder = {}
 Builder.__index = Builder
 
 --- A new, empty region builder. Feed it the runs of each row (rows in increasing order, each
---- row's runs in increasing column order) with row, run and finish; then read its regions.
+--- row's runs in increasing column order) with runs, then finish; then read its regions.
 ---@return table
 function M.new()
   return setmetatable({
-    n = 0, x0 = {}, y0 = {}, x1 = {}, y1 = {}, key = {}, parent = {}, top = {}, bottom = {},
+    -- the rectangles: columns x0 to x1 and rows y0 to y1 (ends exclusive), key, union-find
+    -- parent, and their seam parts above (tfirst, tcount) and below (bfirst, bcount): ranges
+    -- of the parts' list
+    n = 0, x0 = {}, y0 = {}, x1 = {}, y1 = {}, key = {}, parent = {},
+    tfirst = {}, tcount = {}, bfirst = {}, bcount = {},
+    -- the seam parts: each a new rectangle (pnew), the one above it (pabove) and the columns
+    -- they share, pa to pb (exclusive). A rectangle's parts above it are made one after the
+    -- other, and so are its parts below it (the rectangles under it come in column order, and
+    -- each one's parts in column order too: one that reached past its right end would leave
+    -- no room for another under it)
+    np = 0, pnew = {}, pabove = {}, pa = {}, pb = {},
+    -- the regions (finish): their count, and the rectangles of region k, in increasing order,
+    -- are members[start[k] .. start[k + 1] - 1]
+    nreg = 0, start = {}, members = {},
     -- the previous row's runs (column from, column to (exclusive), key, rectangle) and the
     -- current row's
     pc0 = {}, pc1 = {}, pkey = {}, prect = {}, pn = 0, prow = false,
@@ -63,20 +90,18 @@ local function union(parent, i, j)
   if i < j then parent[j] = i elseif j < i then parent[i] = j end
 end
 
-local function push(list, a, b)
-  local n = #list
-  list[n + 1], list[n + 2] = a, b
-end
-
 -- Link the current row's runs to the previous row's: extend, or start rectangles, with
 -- their seams and unions; then the current row becomes the previous one.
 local function endRow(self)
   local cn = self.cn
   if self.crow then
-    local adjacent = self.prow and self.crow == self.prow + 1
+    local row = self.crow
+    local adjacent = self.prow and row == self.prow + 1
     local pc0, pc1, pkey, prect, pn = self.pc0, self.pc1, self.pkey, self.prect, self.pn
     local cc0, cc1, ckey, crect = self.cc0, self.cc1, self.ckey, self.crect
-    local parent, top, bottom = self.parent, self.top, self.bottom
+    local x0, y0, x1, y1, key, parent = self.x0, self.y0, self.x1, self.y1, self.key, self.parent
+    local tfirst, tcount, bfirst, bcount = self.tfirst, self.tcount, self.bfirst, self.bcount
+    local pnew, pabove, pa, pb, np = self.pnew, self.pabove, self.pa, self.pb, self.np
     local j = 1
     for i = 1, cn do
       local c0, c1, k = cc0[i], cc1[i], ckey[i]
@@ -85,13 +110,14 @@ local function endRow(self)
         while j <= pn and pc1[j] <= c0 do j = j + 1 end
         if j <= pn and pc0[j] == c0 and pc1[j] == c1 and pkey[j] == k then
           rect = prect[j] -- the same columns and key: one rectangle, one row taller
-          self.y1[rect] = self.crow + 1
+          y1[rect] = row + 1
         end
       end
       if not rect then
         local n = self.n + 1
         self.n, rect = n, n
-        self.x0[n], self.y0[n], self.x1[n], self.y1[n], self.key[n], parent[n] = c0, self.crow, c1, self.crow + 1, k, n
+        x0[n], y0[n], x1[n], y1[n], key[n], parent[n] = c0, row, c1, row + 1, k, n
+        tfirst[n], tcount[n], bfirst[n], bcount[n] = np + 1, 0, 0, 0
         if adjacent then
           -- every run above that shares a column with this one and has its key: a seam
           -- between the two rectangles, which are one region
@@ -102,12 +128,11 @@ local function endRow(self)
               if a < c0 then a = c0 end
               if b > c1 then b = c1 end
               local above = prect[jj]
-              local list = top[n]
-              if not list then list = {}; top[n] = list end
-              push(list, a, b)
-              list = bottom[above]
-              if not list then list = {}; bottom[above] = list end
-              push(list, a, b)
+              np = np + 1
+              pnew[np], pabove[np], pa[np], pb[np] = n, above, a, b
+              tcount[n] = tcount[n] + 1
+              if bcount[above] == 0 then bfirst[above] = np end
+              bcount[above] = bcount[above] + 1
               union(parent, n, above)
             end
             jj = jj + 1
@@ -116,6 +141,7 @@ local function endRow(self)
       end
       crect[i] = rect
     end
+    self.np = np
   end
   -- the current row becomes the previous one (the arrays swap: nothing allocated)
   self.pc0, self.cc0 = self.cc0, self.pc0
@@ -125,99 +151,139 @@ local function endRow(self)
   self.pn, self.prow, self.cn = cn, self.crow, 0
 end
 
---- Start row r (rows in increasing order; a row skipped is a row without solid tiles). The
---- current row again goes on with it (its next chunk).
+--- Runs of solid cells of row r (rows in increasing order; a row skipped is a row without
+--- solid tiles): run i is columns c0s[i] to c1s[i] - 1, of the key keys[i] > 0, for i = 1 to
+--- n, in increasing column order. The current row again goes on with them (its next chunk),
+--- and a run that starts where the last one ended, with its key, continues it (runs from two
+--- chunks).
 ---@param r integer
-function Builder:row(r)
-  if r == self.crow then return end
-  endRow(self)
-  self.crow = r
-end
-
---- A run of solid cells of one key in the current row: columns c0 to c1 - 1. A run that
---- starts where the last one ended, with its key, continues it (runs from two chunks).
----@param c0 integer
----@param c1 integer
----@param key integer > 0
-function Builder:run(c0, c1, key)
-  local cn = self.cn
-  if cn > 0 and self.cc1[cn] == c0 and self.ckey[cn] == key then
-    self.cc1[cn] = c1
-    return
+---@param c0s integer[]
+---@param c1s integer[]
+---@param keys integer[]
+---@param n integer
+function Builder:runs(r, c0s, c1s, keys, n)
+  if r ~= self.crow then
+    endRow(self)
+    self.crow = r
   end
-  cn = cn + 1
-  self.cc0[cn], self.cc1[cn], self.ckey[cn] = c0, c1, key
+  local cc0, cc1, ckey, cn = self.cc0, self.cc1, self.ckey, self.cn
+  for i = 1, n do
+    local c0, c1, key = c0s[i], c1s[i], keys[i]
+    if cn > 0 and cc1[cn] == c0 and ckey[cn] == key then
+      cc1[cn] = c1
+    else
+      cn = cn + 1
+      cc0[cn], cc1[cn], ckey[cn] = c0, c1, key
+    end
+  end
   self.cn = cn
 end
 
---- End the last row. Returns the regions: a list of lists of rectangle numbers, each region
---- in the order of its rectangles, regions in the order of their first rectangle (its first
---- tile in row-major order).
----@return table[]
+--- End the last row, and number the regions: 1 to the count returned, in the order of their
+--- first rectangle (its first tile in row-major order); Builder:first and Builder:body read
+--- region k.
+---@return integer
 function Builder:finish()
   endRow(self)
   self.prow = false
-  local parent, regions, of = self.parent, {}, {}
-  for i = 1, self.n do
+  local parent, n = self.parent, self.n
+  -- a region's root is its lowest rectangle (union keeps the lower root), so the rectangles
+  -- in increasing order meet each root before the rest of its region
+  local regionOf, count, nreg = {}, {}, 0
+  for i = 1, n do
     local r = find(parent, i)
-    local list = of[r]
-    if not list then
-      list = {}
-      of[r] = list
-      regions[#regions + 1] = list
+    local k
+    if r == i then
+      nreg = nreg + 1
+      k, count[nreg] = nreg, 0
+    else
+      k = regionOf[r]
     end
-    list[#list + 1] = i
+    regionOf[i], count[k] = k, count[k] + 1
   end
-  return regions
+  -- the rectangles by region, each region's in increasing order (a counting sort)
+  local start, members, at = self.start, self.members, 1
+  for k = 1, nreg do
+    start[k] = at
+    at = at + count[k]
+    count[k] = start[k]
+  end
+  start[nreg + 1] = at
+  for i = 1, n do
+    local k = regionOf[i]
+    members[count[k]] = i
+    count[k] = count[k] + 1
+  end
+  self.nreg = nreg
+  return nreg
 end
 
--- A face's seam from its parts (column pairs along it, increasing), the face running from
--- column c0 to c1 (forward) or from c1 back to c0: false, true (all of it) or the parts as
--- fractions of the face, increasing (strike/base/VertexShape.lua, `_seams`).
-local function seam(list, c0, c1, forward)
-  if not list then return false end
-  local n, len = #list, c1 - c0
-  if n == 2 and list[1] == c0 and list[2] == c1 then return true end
-  local parts = {}
+-- The seams a rectangle's faces get when the parts on them are whole faces (shared: a
+-- piece's `_seams` is never changed, strike/base/VertexShape.lua)
+local WHOLE = { [true] = { [true] = { true, false, true, false }, [false] = { true, false, false, false } },
+  [false] = { [true] = { false, false, true, false } } }
+
+-- A face's seam from its parts (pa, pb from parts first to first + count - 1: column pairs
+-- along it, increasing), the face running from column c0 to c1 (forward) or from c1 back to
+-- c0: false, true (all of it) or the parts as fractions of the face, increasing
+-- (strike/base/VertexShape.lua, `_seams`).
+local function seam(pa, pb, first, count, c0, c1, forward)
+  if count == 0 then return false end
+  if count == 1 and pa[first] == c0 and pb[first] == c1 then return true end
+  local parts, len = {}, c1 - c0
   if forward then
-    for i = 1, n do parts[i] = (list[i] - c0) / len end
+    for i = 0, count - 1 do
+      parts[2 * i + 1], parts[2 * i + 2] = (pa[first + i] - c0) / len, (pb[first + i] - c0) / len
+    end
   else
-    for i = 1, n, 2 do
-      parts[n - i], parts[n - i + 1] = (c1 - list[i + 1]) / len, (c1 - list[i]) / len
+    for i = 0, count - 1 do
+      local m = 2 * (count - i)
+      parts[m - 1], parts[m] = (c1 - pb[first + i]) / len, (c1 - pa[first + i]) / len
     end
   end
   return parts
 end
 
---- The body of a region: a Collider of its rectangles, cell (c, r) spanning x from ox + c gw
+--- The first rectangle of region k (Builder:rect reads it).
+---@param k integer
+---@return integer
+function Builder:first(k) return self.members[self.start[k]] end
+
+--- The body of region k: a Collider of its rectangles, cell (c, r) spanning x from ox + c gw
 --- to ox + (c + 1) gw and y from oy + r gh to oy + (r + 1) gh, where (ox, oy) is the key's
 --- offset (offx[key], offy[key]), with the seams between them marked; and its number of tiles.
----@param region integer[]
+---@param k integer
 ---@param offx number[]
 ---@param offy number[]
 ---@param gw number
 ---@param gh number
 ---@return strike.Collider
 ---@return integer tiles
-function Builder:body(region, offx, offy, gw, gh)
-  local body, tiles = Collider(), 0
-  for i = 1, #region do
-    local q = region[i]
-    local c0, r0, c1, r1, k = self.x0[q], self.y0[q], self.x1[q], self.y1[q], self.key[q]
-    local ox, oy = offx[k], offy[k]
+function Builder:body(k, offx, offy, gw, gh)
+  local members, x0, y0, x1, y1, key = self.members, self.x0, self.y0, self.x1, self.y1, self.key
+  local tfirst, tcount, bfirst, bcount, pa, pb = self.tfirst, self.tcount, self.bfirst, self.bcount, self.pa, self.pb
+  local from, to = self.start[k], self.start[k + 1] - 1
+  local rects, tiles = {}, 0
+  for m = from, to do
+    local q = members[m]
+    local c0, r0, c1, r1, kq = x0[q], y0[q], x1[q], y1[q], key[q]
+    local ox, oy = offx[kq], offy[kq]
     tiles = tiles + (c1 - c0) * (r1 - r0)
     local xa, xb, ya, yb = ox + c0 * gw, ox + c1 * gw, oy + r0 * gh, oy + r1 * gh
     local rect = Rectangle((xa + xb) / 2, (ya + yb) / 2, xb - xa, yb - ya)
-    local t, b = self.top[q], self.bottom[q]
-    if t or b then
+    local nt, nb = tcount[q], bcount[q]
+    if nt > 0 or nb > 0 then
       -- (faces as S.hapes.Rectangle numbers them: 1 the min-y side, running +x; 2 the +x
       -- side; 3 the max-y side, running -x; 4 the -x side. Sides are never seams: two runs
       -- of a row never touch)
-      rect._seams = { seam(t, c0, c1, true), false, seam(b, c0, c1, false), false }
+      local t = seam(pa, pb, tfirst[q], nt, c0, c1, true)
+      local b = seam(pa, pb, bfirst[q], nb, c0, c1, false)
+      local whole = type(t) == 'boolean' and type(b) == 'boolean' and WHOLE[t][b]
+      rect._seams = whole or { t, false, b, false }
     end
-    body:add(rect)
+    rects[m - from + 1] = rect
   end
-  return body, tiles
+  return Collider._of(rects), tiles
 end
 
 --- The rectangle q: its columns c0 to c1 and rows r0 to r1 (ends exclusive) and its key.

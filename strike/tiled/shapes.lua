@@ -92,7 +92,7 @@ end
 --- An object's frame: its own coordinates (its (x, y) at the origin, unrotated) to its
 --- layer's, turned by its rotation (degrees, clockwise on a y-down screen) about (x, y).
 ---@param obj table
----@param where string
+---@param where string|table a place (map.text)
 ---@return number[]
 function M.frame(obj, where)
   local x = number(obj.x, where, 'x', 0)
@@ -238,8 +238,11 @@ local function points(list, where, field)
     if type(p) ~= 'table' then
       fail(where, ('%s[%d] must be a point {x =, y =}, got %s'):format(field, i, describe(p)))
     end
-    xs[i] = number(p.x, where, ('%s[%d].x'):format(field, i))
-    ys[i] = number(p.y, where, ('%s[%d].y'):format(field, i))
+    local x, y = p.x, p.y
+    -- (the field's name written only for an error)
+    if type(x) ~= 'number' or x - x ~= 0 then number(x, where, ('%s[%d].x'):format(field, i)) end
+    if type(y) ~= 'number' or y - y ~= 0 then number(y, where, ('%s[%d].y'):format(field, i)) end
+    xs[i], ys[i] = x, y
   end
   return xs, ys, #list
 end
@@ -251,7 +254,7 @@ local SHAPES = { rectangle = true, ellipse = true, polygon = true, polyline = tr
 --- from the fields a JSON map marks it with (ellipse, point, capsule: true; polygon,
 --- polyline: its points; text: its text); 'rectangle' when none.
 ---@param obj table
----@param where string
+---@param where string|table a place (map.text)
 ---@return string
 function M.kind(obj, where)
   if obj.gid ~= nil then return 'tile' end
@@ -289,7 +292,7 @@ end
 ---@param kind string M.kind's answer
 ---@param P number[]
 ---@param oneway boolean
----@param where string
+---@param where string|table a place (map.text)
 function M.add(out, obj, kind, P, oneway, where)
   local part
   if kind == 'rectangle' or kind == 'text' then
@@ -312,9 +315,7 @@ function M.add(out, obj, kind, P, oneway, where)
     if oneway then
       part = Chain(flat(P, xs, ys, n, mirrored))
     else
-      part = Collider()
-      part:add(Chain(flat(P, xs, ys, n, false)))
-      part:add(Chain(flat(P, xs, ys, n, true)))
+      part = Collider._of({ Chain(flat(P, xs, ys, n, false)), Chain(flat(P, xs, ys, n, true)) })
     end
   end
   out[#out + 1] = part
