@@ -52,11 +52,12 @@ copy-check:
 rockspec-check:
 	@bash tools/rockspec-check.sh $(VMS)
 
-# Benchmarks, not part of test: bench/run.lua, bench/move.lua, bench/movers.lua and
-# bench/tiled.lua (S.tiled's first load in fresh processes) under each of BENCH_VMS
-# (bench/bench.sh), tables printed and saved to bench/results/<vm>.csv, move-<vm>.csv,
-# movers-<vm>.csv and tiled-<vm>.csv (LuaJIT: also tiled-luajit-stock.csv, the standalone
-# limits). STRIKE_PEERS=/path/to/peers adds the peers found there.
+# Benchmarks, not part of test: bench/run.lua, bench/move.lua, bench/movers.lua,
+# bench/tiled.lua (S.tiled's first load in fresh processes) and bench/space.lua (the world
+# beside the peers) under each of BENCH_VMS (bench/bench.sh), tables printed and saved to
+# bench/results/<vm>.csv, move-, movers-, tiled- and space-<vm>.csv (LuaJIT: also the
+# -luajit-stock.csv of the runs under the standalone limits). STRIKE_PEERS=/path/to/peers adds
+# the peers found there.
 BENCH_VMS ?= luajit lua5.4
 
 bench:

@@ -8,13 +8,16 @@
 #   BENCH_ARGS="--pairs 2000" bash bench/bench.sh  extra options for bench/run.lua
 #
 # Runs `bench/run.lua --save`, then `bench/move.lua --save` (space:move beside bump's and
-# slick's world:move), then `bench/movers.lua --save` (every body moving; on LuaJIT with LÖVE's
-# JIT limits and with the stock ones), then `bench/tiled.lua --save` (S.tiled loading a 200 x
-# 200 map, 40 % solid, with 1,000 objects, its first load in fresh processes; on LuaJIT with
-# both limits too), under each VM in turn (never in parallel, so that
-# runs do not share the CPUs), prints each VM's tables and writes bench/results/<vm>.csv,
-# move-<vm>.csv, movers-<vm>.csv and tiled-<vm>.csv. Progress goes to stderr. Fails when a VM
-# is missing or its run fails; the other VMs still run.
+# slick's world:move), then `bench/movers.lua --save` (every body moving), then
+# `bench/tiled.lua --save` (S.tiled loading a 200 x 200 map, 40 % solid, with 1,000 objects,
+# its first load in fresh processes), then `bench/space.lua --save` (the world: frames, rays,
+# build, churn and memory beside HC, bump and Box2D through LÖVE), under each VM in turn (never
+# in parallel, so that runs do not share the CPUs). On LuaJIT the move, the movers, the Tiled
+# load and the world's frames and rays run a second time with the standalone interpreter's JIT
+# limits (--jit stock), their tables counting the trace flushes. Prints each VM's tables and
+# writes bench/results/<vm>.csv, move-, movers-, tiled- and space-<vm>.csv (-luajit-stock.csv
+# for the stock runs). Progress goes to stderr. Fails when a VM is missing or its run fails;
+# the other VMs still run.
 set -u
 cd "$(dirname "$0")/.." || exit 1
 if [ -n "${STRIKE_PEERS:-}" ]; then
@@ -36,8 +39,16 @@ for vm in ${BENCH_VMS:-luajit lua5.4}; do
   if [ "$vm" = luajit ]; then movers="$movers --jit love && $vm bench/movers.lua --save --jit stock"; fi
   tiled="$vm bench/tiled.lua --save"
   if [ "$vm" = luajit ]; then tiled="$tiled --jit love && $vm bench/tiled.lua --save --jit stock"; fi
-  if "$vm" bench/run.lua --save ${BENCH_ARGS:-} && "$vm" bench/move.lua --save && eval "$movers" \
-    && eval "$tiled"; then
+  # (the world: frames, rays, build, churn, memory beside the peers; on LuaJIT the move and
+  # the world under the stock limits too, where the tables count the trace flushes)
+  space="$vm bench/space.lua --save"
+  move="$vm bench/move.lua --save"
+  if [ "$vm" = luajit ]; then
+    space="$space --jit love && $vm bench/space.lua --save --jit stock --sections frame,rays"
+    move="$move --jit love && $vm bench/move.lua --save --jit stock"
+  fi
+  if "$vm" bench/run.lua --save ${BENCH_ARGS:-} && eval "$move" && eval "$movers" \
+    && eval "$tiled" && eval "$space"; then
     ran+=("$vm")
     echo "== $vm: $(( $(date +%s) - t0 )) s"
   else

@@ -49,7 +49,8 @@
 ---                 passes: collectgarbage('count') after minus before, / 1,000 (on LuaJIT with
 ---                 the count of traces compiled meanwhile, since a trace is a GC object).
 --- Then strike's time over each peer's (below 1: strike faster). --save writes every number
---- to bench/results/move-<vm>.csv (vm,section,library,n,metric,value as space-<vm>.csv).
+--- to bench/results/move-<vm>.csv (move-luajit-stock.csv with --jit stock; vm,section,library,
+--- n,metric,value as space-<vm>.csv).
 package.path = './?.lua;./?/init.lua;' .. package.path
 
 local PRNG = require('spec.helpers.prng')
@@ -99,7 +100,7 @@ local CLEAR = 1 -- px between a spawn or wrap point's mover and every box
 local PASSES, KB_MOVES = 3, 1000
 
 local vmName = jit and jit.version or _VERSION
-local vmFile = jit and 'luajit' or _VERSION:gsub('Lua ', 'lua')
+local vmFile = jit and ('luajit' .. (JIT_LIMITS == 'stock' and '-stock' or '')) or _VERSION:gsub('Lua ', 'lua')
 
 local function wanted(name) return not opts.only or opts.only[name] end
 
@@ -392,7 +393,7 @@ if opts.save then
   local f = assert(io.open(path, 'w'))
   f:write('vm,section,library,n,metric,value\n')
   for _, r in ipairs(csv) do
-    f:write(('%s,%s,%s,%d,%s,%.6g\n'):format(vmName, 'move', r[1], N, r[2], r[3]))
+    f:write(('%s,%s,%s,%d,%s,%.6g\n'):format(vmName .. (jit and (' ' .. JIT_LIMITS) or ''), 'move', r[1], N, r[2], r[3]))
   end
   f:close()
   print('saved ' .. path)

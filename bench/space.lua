@@ -45,7 +45,8 @@
 ---           mix as colliders and as shapes, what a first getBounds adds (strike fills its
 ---           caches on the first query, and adding a body to a space reads its bounds), and
 ---           what adding them to a space adds; the peers' bodies and worlds beside them.
---- --save writes every number to bench/results/space-<vm>.csv. The run fails (exit status 1,
+--- --save writes every number to bench/results/space-<vm>.csv (space-luajit-stock.csv with
+--- --jit stock). The run fails (exit status 1,
 --- after the tables) when strike's pairs or rays disagree with the brute force.
 package.path = './?.lua;./?/init.lua;' .. package.path
 
@@ -93,7 +94,7 @@ local CHURN_N, CHURN_BULLETS, CHURN_FRAMES, CHURN_WARM = 1000, 100, 60, 10
 local CHECK_N, CHECK_FRAMES = 1000, 30
 
 local vmName = jit and jit.version or _VERSION
-local vmFile = jit and 'luajit' or _VERSION:gsub('Lua ', 'lua')
+local vmFile = jit and ('luajit' .. (JIT_LIMITS == 'stock' and '-stock' or '')) or _VERSION:gsub('Lua ', 'lua')
 
 local function wanted(name) return not opts.only or opts.only[name] end
 
@@ -847,7 +848,7 @@ if opts.save then
   local f = assert(io.open(path, 'w'))
   f:write('vm,section,library,n,metric,value\n')
   for _, r in ipairs(csv) do
-    f:write(('%s,%s,%s,%d,%s,%.6g\n'):format(vmName, r[1], r[2], r[3], r[4], r[5]))
+    f:write(('%s,%s,%s,%d,%s,%.6g\n'):format(vmName .. (jit and (' ' .. JIT_LIMITS) or ''), r[1], r[2], r[3], r[4], r[5]))
   end
   f:close()
   print('saved ' .. path)
