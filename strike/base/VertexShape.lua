@@ -3,7 +3,11 @@
 ---   _l          local geometry, 4n numbers: vertex i's record starts at k = 4i - 3 and holds
 ---               the vertex relative to the centroid, unrotated and unscaled (l[k], l[k+1];
 ---               positive winding), and the unit outward normal of edge i, from vertex i to
----               vertex i + 1 (l[k+2], l[k+3])
+---               vertex i + 1 (l[k+2], l[k+3]). Never changed once built, so shapes share it:
+---               a shape built with the very numbers (to the bit, the sign of zero included)
+---               of one of the last few built takes that one's table (_shareGeometry), and a
+---               copy shares its original's. Code that changes a shape's local geometry in
+---               place first takes a copy of its own (_ownGeometry).
 ---   self[...]   world-space data, refreshed when dirty, in the shape's own array part: the
 ---               header every shape has, then one record per vertex (vertex, edge normal, edge
 ---               offset), laid out as strike/base/layout.lua says, with the shape's scalars
@@ -118,11 +122,83 @@ local function symmetricHalf(l, n)
   return h
 end
 
+-- Local geometry (see the header). `recent` holds the last RECENT tables made, weakly (sharing
+-- is invisible: a shape gets the very numbers it would have had, so nothing depends on which
+-- are still there), `last` the slot of the newest. A level's tiles, a wave of enemies,
+-- bullets: shapes of one size come in runs, and among 20,000 16-by-12 rectangles at random
+-- places (bench/space.lua's memory section) the last table made matched 98 % of the time,
+-- one of the last 8 99 % (the rounding of the centroid leaves a few variants of the numbers).
+local RECENT = 8
+local recent = setmetatable({}, { __mode = 'v' })
+local last = 0
+-- _setVertices works the numbers out in spare[n], a table that becomes the shape's when no
+-- recent one matches (then the next shape of n vertices makes a new one), so that nothing is
+-- copied and nothing allocated when one matches; for n up to SPARE (a shape with more makes
+-- its table: a spare kept for it would be large).
+local SPARE = 16
+local spare = {}
+
+-- Are g[1..m] and l[1..m] the same numbers, and g no longer? (Every number is a float; the
+-- sign of a zero is compared too, so that a shared table gives the results an own one would.)
+local function sameGeometry(g, l, m)
+  if g[m + 1] ~= nil then return false end -- (a shorter g fails below: nil is no number)
+  for k = 1, m do
+    local a, b = g[k], l[k]
+    if a ~= b or (a == 0 and 1 / a ~= 1 / b) then return false end
+  end
+  return true
+end
+
+-- The recent table with the numbers l[1..m], or nil.
+local function recentMatch(l, m)
+  local l1, j = l[1], last
+  for _ = 1, RECENT do -- (the newest first)
+    local g = recent[j]
+    if g and g[1] == l1 and sameGeometry(g, l, m) then return g end
+    j = j > 1 and j - 1 or RECENT
+  end
+  return nil
+end
+
+-- Keep g among the recent tables.
+local function remember(g)
+  last = last < RECENT and last + 1 or 1
+  recent[last] = g
+end
+
+--- (internal) The local geometry of n vertices with the numbers l[1..4n] (see the header): one
+--- of the last few made when it has those very numbers, else a new table that copies them.
+--- `l` itself is never kept, so a caller may pass a scratch table.
+---@param l number[]
+---@param n integer
+---@return number[]
+function VertexShape._shareGeometry(l, n)
+  local m = 4 * n
+  local g = recentMatch(l, m)
+  if g then return g end
+  g = tnew and tnew(m, 0) or {} -- (LuaJIT: no room to spare past 4n)
+  for k = 1, m do g[k] = l[k] end
+  remember(g)
+  return g
+end
+
+--- (internal) Give the shape a local geometry of its own, a copy no other shape shares, and
+--- return it: for code that changes it in place (S.pace's queryRect probe).
+---@return number[]
+function VertexShape:_ownGeometry()
+  local l, m = self._l, 4 * self[COUNT]
+  local own = tnew and tnew(m, 0) or {}
+  for k = 1, m do own[k] = l[k] end
+  self._l = own
+  return own
+end
+
 --- Store world-space vertices xs, ys (count n, positive winding, validated) as local
 --- geometry about the centroid (cx, cy), with the given unscaled area; the slot SHORT gets the
 --- shortest edge (for Shape:_checkNew, which the constructor calls next).
 function VertexShape:_setVertices(xs, ys, n, cx, cy, area)
-  local l = tnew and tnew(4 * n, 0) or {} -- (LuaJIT: no room to spare past 4n)
+  local l = spare[n] -- (worked out here, then shared: see `spare`)
+  if not l then l = tnew and tnew(4 * n, 0) or {} end -- (LuaJIT: no room to spare past 4n)
   local r2 = 0
   for i = 1, n do
     local x, y = xs[i] - cx, ys[i] - cy
@@ -140,7 +216,7 @@ function VertexShape:_setVertices(xs, ys, n, cx, cy, area)
       l[k + 2], l[k + 3] = ey / len, -ex / len
     else -- (an edge too short or too long for its square: scaled, still unit; see limits.lua)
       local nx, ny = unit(ey, -ex)
-      l[k + 2], l[k + 3] = nx or 0, ny or -1
+      l[k + 2], l[k + 3] = nx or 0.0, ny or -1.0 -- (floats, as every number here: see sameGeometry)
     end
     -- the shortest edge, from the coordinates as given (what the constructors check)
     local m = i < n and i + 1 or 1
@@ -150,9 +226,17 @@ function VertexShape:_setVertices(xs, ys, n, cx, cy, area)
   local size = layout.size(n)
   for k = 1, size do self[k] = 0 end
   for k = #self, size + 1, -1 do self[k] = nil end
-  self[COUNT], self._l = n, l
-  self._seams = false -- (see the header: an own field, read per leaf by the collider queries)
   self[HALF] = symmetricHalf(l, n)
+  local g = recentMatch(l, 4 * n)
+  if g then
+    if n <= SPARE then spare[n] = l end
+  else
+    g = l
+    spare[n] = nil
+    remember(g)
+  end
+  self[COUNT], self._l = n, g
+  self._seams = false -- (see the header: an own field, read per leaf by the collider queries)
   self[AREA], self[RADIUS], self[SHORT] = area, sqrt(r2), short
   self[ROUND] = 0
   -- (no refresh yet: see _refresh and _movedBounds)

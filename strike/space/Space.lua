@@ -1150,6 +1150,7 @@ local function queryRectOf(self, x, y, w, h, filterArg, out)
   local probe = level.probe
   if not probe then
     probe = Rectangle(0, 0, 1, 1)
+    probe:_ownGeometry() -- (changed in place below: a table no game's 1 by 1 rectangle shares)
     level.probe = probe
   end
   -- (the probe's local geometry set in place: corners at (+-w/2, +-h/2), as the
@@ -1157,7 +1158,7 @@ local function queryRectOf(self, x, y, w, h, filterArg, out)
   local hw, hh = w / 2, h / 2
   local l = probe._l
   l[1], l[2], l[5], l[6], l[9], l[10], l[13], l[14] = -hw, -hh, hw, -hh, hw, hh, -hw, hh
-  probe.dx, probe.dy, probe[AREA], probe[RADIUS] = w, h, w * h, sqrt(hw * hw + hh * hh)
+  probe._w, probe._h, probe[AREA], probe[RADIUS] = w, h, w * h, sqrt(hw * hw + hh * hh)
   probe[X], probe[Y] = x + hw, y + hh
   probe:_touch()
   return overlapping(self, level, probe, filterArg, out)
