@@ -131,6 +131,23 @@ function Collider:new(...)
   self:add(...)
 end
 
+--- (internal) Make `self`, a new collider, the collider of `shape`, which a single-shape
+--- collider's constructor (colliders/single.lua) has just built: what Collider.new(self, shape)
+--- does, without the checks of `add`, which a shape built a moment ago passes. A shape that
+--- would fail one (its class's constructor never set its pose, or put it in a collider or a
+--- space), or a class with an `add` of its own, takes Collider.new, its checks and its errors.
+---@param shape strike.Shape
+function Collider._newSingle(self, shape)
+  if type(shape) ~= 'table' or rawget(shape, '_pose') == nil or rawget(shape, '_parent') ~= nil
+    or rawget(shape, '_space') ~= nil or rawget(shape, '_sid') ~= nil or self.add ~= Collider.add
+    or not isShape(shape) then
+    return Collider.new(self, shape)
+  end
+  self._shapes = { [0] = self, shape } -- (slot 0: the list's owner, see childrenOf)
+  startCaches(self)
+  shape._parent = self
+end
+
 --- The empty instance `Class(...)` fills (class.lua): a table with room for the slots and
 --- for the fields a collider in a space has.
 ---@return table

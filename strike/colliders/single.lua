@@ -19,8 +19,9 @@ return function(shapes, name)
     end
     local ShapeClass = shapes[name]
     if not ShapeClass then check.fail(('strike.trikers.%s: S.hapes.%s is no longer registered'):format(name, name)) end
-    Collider.new(self, ShapeClass(...))
-    self[layout.CANGLE] = self._shapes[1][layout.ANGLE]
+    local shape = ShapeClass(...)
+    Collider._newSingle(self, shape)
+    self[layout.CANGLE] = shape[layout.ANGLE]
   end
   return Single
 end
