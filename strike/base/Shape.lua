@@ -17,7 +17,8 @@ local RADIUS, SCALE, SHORT, SIN = layout.RADIUS, layout.SCALE, layout.SHORT, lay
 local vec = require(ROOT .. '.vec')
 local limits = require(ROOT .. '.limits')
 local kinds = require(ROOT .. '.collide.dispatch').kind
-local tnew = require(ROOT .. '.compat').tableNew
+local compat = require(ROOT .. '.compat')
+local tnew, unpack = compat.tableNew, compat.unpack
 
 local X, Y = layout.X, layout.Y
 local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
@@ -121,14 +122,32 @@ end
 ---@param y number
 function Shape:_placeCentroid(x, y) self[X], self[Y] = x + 0.0, y + 0.0 end
 
---- The empty instance `Class(...)` fills (class.lua): room for the slots every shape has
---- (layout.lua) and for its few named fields, so that no table grows while it is built.
---- Kinds with vertex records ask for more (VertexShape).
+-- Zeros for Shape._slots to copy: as many as the largest shape of VertexShape._alloc has slots.
+local ZEROS = {}
+for k = 1, layout.size(64) do ZEROS[k] = 0 end
+
+--- An empty shape with `size` array slots and room for 8 named fields, so that no table grows
+--- while it is built or used: a table that grows is laid out anew, which costs garbage and
+--- gives LuaJIT's compiled field reads two layouts of one class to guard against; and the new
+--- layout rounds its array part up to a power of two (64 slots of 16 bytes on Lua 5.4 for a
+--- rectangle's 43). LuaJIT: table.new, its slots nil. The other VMs size a table only from a
+--- constructor: this one has the slots as zeros (copied by the last expression, which sizes
+--- the array part exactly) and names the fields a shape has (nil: it holds none of them yet,
+--- but its hash part is made for 8; Lua 5.1 keeps those names in it, so they are the ones
+--- strike sets).
+---@param size integer
 ---@return table
-function Shape._alloc()
-  if tnew then return tnew(layout.SHAPE_HEADER, 8) end
-  return { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 }
+function Shape._slots(size)
+  if tnew then return tnew(size, 8) end
+  return { _pose = nil, _kind = nil, _l = nil, _seams = nil, _parent = nil, _space = nil, _sid = nil,
+    unpack(ZEROS, 1, size) }
 end
+
+--- The empty instance `Class(...)` fills (class.lua): room for the slots every shape has
+--- (layout.lua) and for its few named fields (Shape._slots). Kinds with vertex records ask
+--- for more (VertexShape).
+---@return table
+function Shape._alloc() return Shape._slots(layout.SHAPE_HEADER) end
 
 --- What the slot SHORT measures (layout.lua: a shape's shortest length), for error messages.
 Shape._shortName = 'shortest length'

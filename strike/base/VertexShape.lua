@@ -66,45 +66,27 @@ VertexShape.name = 'VertexShape'
 VertexShape._shortName = 'shortest edge'
 
 --- The empty instance `Class(...)` fills (class.lua): room for the slots of `n` vertices (by
---- default 5; a polygon with more grows once) and for a polygon's named fields (8: its own
---- are _pose, _l, _seams and _kind, then `_parent`, or a space's two, and a subclass's few).
---- Subclasses that know their vertex count from their arguments pass it (ConvexPolygon,
---- RegularPolygon): a table that grows is laid out anew, and LuaJIT's compiled field reads
---- then meet two layouts of the same class where they would meet one.
+--- default 5; a polygon with more grows once) and for a polygon's named fields (Shape._slots:
+--- its own are _pose, _l, _seams and _kind, then `_parent`, or a space's two, and a
+--- subclass's few). Subclasses that know their vertex count from their arguments pass it
+--- (ConvexPolygon, Rectangle, RegularPolygon): a table that grows is laid out anew.
 ---@param n integer|nil
 ---@return table
 function VertexShape._alloc(n)
-  if tnew then
-    if type(n) == 'number' and n >= 3 and n <= 64 and n % 1 == 0 then return tnew(layout.size(n), 8) end
-    return tnew(layout.size(5), 8)
-  end
-  return {
-    0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0
-  } -- (layout.size(5) slots)
+  if type(n) == 'number' and n >= 3 and n <= 64 and n % 1 == 0 then return Shape._slots(layout.size(n)) end
+  return Shape._slots(layout.size(5))
 end
 
 --- The empty instance of a shape with two vertex records (edges, capsules), as an `_alloc`
 --- (class.lua; it ignores the constructor's arguments).
 ---@return table
-function VertexShape._alloc2()
-  if tnew then return tnew(layout.size(2), 8) end
-  return {
-    0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0
-  } -- (layout.size(2) slots)
-end
+function VertexShape._alloc2() return Shape._slots(layout.size(2)) end
 
---- An empty instance with `n` array slots (zeros) and room for 8 named fields, for a
---- subclass with slots of its own (ChainSegment). On the interpreters the first named field
---- lays the array out anew anyway, at a power of two.
+--- An empty instance with `n` array slots and room for 8 named fields, for a subclass with
+--- slots of its own (ChainSegment).
 ---@param n integer
 ---@return table
-function VertexShape._allocSlots(n)
-  if tnew then return tnew(n, 8) end
-  local t = {}
-  for k = 1, n do t[k] = 0 end
-  return t
-end
+function VertexShape._allocSlots(n) return Shape._slots(n) end
 
 -- Normals this close to antiparallel are made exactly antiparallel (a change far below
 -- any coordinate's rounding noise), so that opposite faces can share one projection.

@@ -149,11 +149,14 @@ function Collider._newSingle(self, shape)
 end
 
 --- The empty instance `Class(...)` fills (class.lua): a table with room for the slots and
---- for the fields a collider in a space has.
+--- for the fields a collider in a space has (as Shape._slots makes a shape: on the VMs other
+--- than LuaJIT the constructor's nil fields size its hash part, and name the fields Lua 5.1
+--- keeps there; a table that grew would have its slots rounded up to 32).
 ---@return table
 function Collider._alloc()
   if tnew then return tnew(CSIZE, 8) end
-  return { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 }
+  return { _shapes = nil, _nleaves = nil, _massOK = nil, _clean = nil, _single = nil, _leaves = nil, _space = nil,
+    _sid = nil, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 }
 end
 
 -- The structure changed: clear every flag here and on every enclosing collider, up to the

@@ -13,6 +13,11 @@ local xs, ys = {}, {} -- (the corners, for the constructor: never kept)
 local Rectangle = ConvexPolygon:extend()
 Rectangle.name = 'Rectangle'
 
+--- The empty instance `Rectangle(...)` fills: room for 4 vertices (ConvexPolygon's would
+--- count the arguments as points).
+---@return table
+function Rectangle._alloc() return ConvexPolygon.super._alloc(4) end
+
 --- A dx-by-dy rectangle (dy defaults to dx) centred on (x, y), turned by `angle` radians.
 --- Unrotated, edge 1 is the min-y side (normal (0, -1)), then +x, max-y and -x.
 --- With `radius` (> 0, below half the shorter side) its corners are rounded by it: it still
