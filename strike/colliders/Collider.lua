@@ -114,10 +114,8 @@ end
 -- The cache slots and flags, all stale (see the cache protocol above), laid out once, at
 -- construction, so that the object's fields never move.
 local function startCaches(self)
-  if self[1] == nil then -- (a table not made by _alloc, which fills the slots with zeros)
-    for k = 1, CSIZE do
-      if self[k] == nil then self[k] = 0 end
-    end
+  if self[1] == nil then -- (made by LuaJIT's table.new, whose slots are nil, or not by _alloc)
+    for k = 1, CSIZE do self[k] = 0 end
   end
   self._nleaves, self._massOK, self._clean, self._single = -1, false, false, false
 end
@@ -132,15 +130,18 @@ function Collider:new(...)
 end
 
 --- (internal) Make `self`, a new collider, the collider of `shape`, which a single-shape
---- collider's constructor (colliders/single.lua) has just built: what Collider.new(self, shape)
---- does, without the checks of `add`, which a shape built a moment ago passes. A shape that
---- would fail one (its class's constructor never set its pose, or put it in a collider or a
---- space), or a class with an `add` of its own, takes Collider.new, its checks and its errors.
+--- collider's constructor (colliders/single.lua) has just built as an instance of `cls`, a
+--- registered shape class (so a strike shape): what Collider.new(self, shape) does, without
+--- the checks of `add`, which a shape built a moment ago passes. A shape that would fail one
+--- (not an instance of `cls`, its constructor never set its pose, or put it in a collider or
+--- a space), or a collider class with an `add` of its own, takes Collider.new, its checks and
+--- its errors.
 ---@param shape strike.Shape
-function Collider._newSingle(self, shape)
-  if type(shape) ~= 'table' or rawget(shape, '_pose') == nil or rawget(shape, '_parent') ~= nil
-    or rawget(shape, '_space') ~= nil or rawget(shape, '_sid') ~= nil or self.add ~= Collider.add
-    or not isShape(shape) then
+---@param cls table
+function Collider._newSingle(self, shape, cls)
+  if type(shape) ~= 'table' or getmetatable(shape) ~= cls or rawget(shape, '_pose') == nil
+    or rawget(shape, '_parent') ~= nil or rawget(shape, '_space') ~= nil or rawget(shape, '_sid') ~= nil
+    or self.add ~= Collider.add then
     return Collider.new(self, shape)
   end
   self._shapes = { [0] = self, shape } -- (slot 0: the list's owner, see childrenOf)

@@ -20,7 +20,7 @@ return function(shapes, name)
     local ShapeClass = shapes[name]
     if not ShapeClass then check.fail(('strike.trikers.%s: S.hapes.%s is no longer registered'):format(name, name)) end
     local shape = ShapeClass(...)
-    Collider._newSingle(self, shape)
+    Collider._newSingle(self, shape, ShapeClass)
     self[layout.CANGLE] = shape[layout.ANGLE]
   end
   return Single

@@ -9,6 +9,23 @@ local badSelf, type = check.badSelf, type
 local sin, cos, pi = math.sin, math.cos, math.pi
 local xs, ys = {}, {} -- (the vertices, for the constructor: never kept)
 
+-- The directions of an n-gon's vertices, sin and cos of a = -2 pi i / n for i = 1..n (flat:
+-- sin at 2i - 1, cos at 2i), by n: the very numbers the constructor's formula gives, worked
+-- out once for each n its fast path meets (n <= 64: ConvexPolygon._safeConvex).
+local directions = {}
+local function directionsOf(n)
+  local d = directions[n]
+  if not d then
+    d = {}
+    for i = 1, n do
+      local a = -2 * pi * i / n
+      d[2 * i - 1], d[2 * i] = sin(a), cos(a)
+    end
+    directions[n] = d
+  end
+  return d
+end
+
 ---@class strike.RegularPolygon : strike.ConvexPolygon
 local RegularPolygon = ConvexPolygon:extend()
 RegularPolygon.name = 'RegularPolygon'
@@ -39,10 +56,8 @@ function RegularPolygon:new(x, y, n, radius, angle)
   -- (edges 2 radius sin(pi / n) long, at least 0.098 radius for n <= 64)
   if ConvexPolygon._safeConvex(x, y, n, 0.098 * radius, radius) then
     -- (in positive winding from vertex 1: the hull would return them as they are)
-    for i = 1, n do
-      local a = -2 * pi * i / n
-      xs[i], ys[i] = x + radius * sin(a) + 0.0, y + radius * cos(a) + 0.0
-    end
+    local d = directionsOf(n)
+    for i = 1, n do xs[i], ys[i] = x + radius * d[2 * i - 1] + 0.0, y + radius * d[2 * i] + 0.0 end
     self:_fromConvex(xs, ys, n, 'strike.RegularPolygon')
   else
     local pts = {}
