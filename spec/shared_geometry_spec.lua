@@ -83,6 +83,7 @@ describe('shared local geometry', function()
     assert.equals(before, numbers(game))
     local x0, y0, x1, y1 = game:getBounds()
     assert.same({ -0.5, -0.5, 0.5, 0.5 }, { x0, y0, x1, y1 })
+    assert.same({ 0, 0, 1, 1, 0 }, { game:unpack() })
     -- and a 1 by 1 rectangle built after the query still gets the numbers of its size
     assert.equals(before, numbers(H.Rectangle(0, 0, 1, 1)))
   end)
@@ -102,16 +103,50 @@ describe('shared local geometry', function()
       select(2, pill:getVertex(2)) })
   end)
 
-  it('every number of a shape\'s local geometry is a float (integers would compare equal to them)', function()
+  it('every vertex and normal of a shape\'s local geometry is a float (integers would compare equal)', function()
     local mathType = math.type -- luacheck: ignore 143 (Lua 5.3+)
     if not mathType then return end
     local shapes = { H.Rectangle(0, 0, 2, 2), H.Rectangle(3, 4, 10, 6, 0.5, 2), H.RegularPolygon(1, 1, 5, 3),
       H.ConvexPolygon(0, 0, 4, 0, 4, 4), H.Edge(0, 0, 4, 0), H.Capsule(0, 0, 2, 2), H.Capsule(0, 0, 2, 8),
       H.Ellipse(0, 0, 4, 2) }
     for i, s in ipairs(shapes) do
-      for k = 1, #s._l do
+      for k = 1, 4 * s:getVertexCount() do
         assert.equals('float', mathType(s._l[k]), ('shape %d, number %d'):format(i, k))
       end
     end
+  end)
+
+  it('a class\'s sizes are part of its local geometry: unpack gives each shape its own', function()
+    -- (far from the origin, where 2 and 2.01 wide rectangles have the same corners once rounded)
+    local x = 1e15
+    local a, b = H.Rectangle(x, 0, 2, 2), H.Rectangle(x, 0, 2.01, 2)
+    assert.equals(numbers(a):match('^(.*) [^ ]+ [^ ]+$'), numbers(b):match('^(.*) [^ ]+ [^ ]+$'))
+    assert.are_not.equals(a._l, b._l)
+    assert.same({ x, 0, 2, 2, 0 }, { a:unpack() })
+    assert.same({ x, 0, 2.01, 2, 0 }, { b:unpack() })
+    assert.same({ 0, 0, 6, 5, 0 }, { H.RegularPolygon(0, 0, 6, 5):unpack() })
+    assert.same({ 0, 0, 6, 5.5, 0 }, { H.RegularPolygon(0, 0, 6, 5.5):unpack() })
+    assert.same({ 0, 0, 4, 2, 8, 0 }, { H.Ellipse(0, 0, 4, 2):unpack() })
+    assert.same({ 0, 0, 4, 2, 12, 0 }, { H.Ellipse(0, 0, 4, 2, 12):unpack() })
+    -- and their integers stay integers, their floats floats (Lua 5.3+ tells them apart)
+    local mathType = math.type -- luacheck: ignore 143 (Lua 5.3+)
+    if mathType then
+      local int, float = H.Rectangle(0, 0, 2, 2), H.Rectangle(0, 0, 2.0, 2.0)
+      assert.are_not.equals(int._l, float._l)
+      assert.same({ 'integer', 'integer' }, { mathType(select(3, int:unpack())), mathType(select(4, int:unpack())) })
+      assert.same({ 'float', 'float' }, { mathType(select(3, float:unpack())), mathType(select(4, float:unpack())) })
+      assert.equals('float', mathType(select(3, H.RegularPolygon(0, 0, 6.0, 5):unpack())))
+      assert.equals('integer', mathType(select(3, H.RegularPolygon(0, 0, 6, 5):unpack())))
+    end
+  end)
+
+  it('a rectangle the general path builds (no fast path) keeps its sizes too, and so does a rounded one', function()
+    -- (outside ConvexPolygon._safeConvex: 1e-7 wide at 1e3 from the origin; and a rounded one)
+    assert.same({ 1000, 0, 1e-7, 1, 0 }, { H.Rectangle(1000, 0, 1e-7, 1):unpack() })
+    assert.same({ 0, 0, 10, 6, 0, 2 }, { H.Rectangle(0, 0, 10, 6, 0, 2):unpack() })
+    local ok = pcall(H.Rectangle, 0, 0, 1e200, 1) -- (an error there leaves no sizes for the next shape)
+    assert.is_false(ok)
+    local p = H.ConvexPolygon(0, 0, 4, 0, 4, 4)
+    assert.equals(12, #p._l)
   end)
 end)

@@ -3,11 +3,14 @@
 ---   _l          local geometry, 4n numbers: vertex i's record starts at k = 4i - 3 and holds
 ---               the vertex relative to the centroid, unrotated and unscaled (l[k], l[k+1];
 ---               positive winding), and the unit outward normal of edge i, from vertex i to
----               vertex i + 1 (l[k+2], l[k+3]). Never changed once built, so shapes share it:
----               a shape built with the very numbers (to the bit, the sign of zero included)
----               of one of the last few built takes that one's table (_shareGeometry), and a
----               copy shares its original's. Code that changes a shape's local geometry in
----               place first takes a copy of its own (_ownGeometry).
+---               vertex i + 1 (l[k+2], l[k+3]); then the class's own sizes, up to 3 numbers
+---               (what its unpack gives back: a Rectangle's width and height, a RegularPolygon's
+---               n and radius, an Ellipse's a, b and n; ConvexPolygon.new's `sizes`). Never
+---               changed once built, so shapes share it: a shape built with the very numbers
+---               (to the bit, the sign of zero and, on Lua 5.3+, integer or float included) of
+---               one of the last few built takes that one's table, and a copy shares its
+---               original's. Code that changes a shape's local geometry in place first takes a
+---               copy of its own (_ownGeometry).
 ---   self[...]   world-space data, refreshed when dirty, in the shape's own array part: the
 ---               header every shape has, then one record per vertex (vertex, edge normal, edge
 ---               offset), laid out as strike/base/layout.lua says, with the shape's scalars
@@ -35,9 +38,11 @@
 ---               place in the compound it was built for, so they travel with it: copies share
 ---               the (never changed) table, transforms keep it (fractions do not change), and
 ---               a piece removed from its Concave keeps it, as do the pieces left (their faces
----               toward the removed one stay seams). Set on every instance, false included:
----               the ray queries read it per leaf hit, and a missing field would cost a walk
----               up the class chain. ConvexPolygon:merge carries it over (see _seamsFrom).
+---               toward the removed one stay seams). An instance has its own only when some
+---               face is a seam; the others read their class's false (Shape.checkClass puts
+---               it on every class, so that the ray queries, which read it per leaf hit, go one
+---               step up the class chain, not all the way). ConvexPolygon:merge carries it
+---               over (see _seamsFrom).
 local ROOT = (...):match('^(.-)%.base%.[^%.]+$')
 local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
@@ -66,10 +71,9 @@ VertexShape.name = 'VertexShape'
 VertexShape._shortName = 'shortest edge'
 
 --- The empty instance `Class(...)` fills (class.lua): room for the slots of `n` vertices (by
---- default 5; a polygon with more grows once) and for a polygon's named fields (Shape._slots:
---- its own are _pose, _l, _seams and _kind, then `_parent`, or a space's two, and a
---- subclass's few). Subclasses that know their vertex count from their arguments pass it
---- (ConvexPolygon, Rectangle, RegularPolygon): a table that grows is laid out anew.
+--- default 5; a polygon with more grows once) and for a polygon's named fields (Shape._slots).
+--- Subclasses that know their vertex count from their arguments pass it (ConvexPolygon,
+--- Rectangle, RegularPolygon): a table that grows is laid out anew.
 ---@param n integer|nil
 ---@return table
 function VertexShape._alloc(n)
@@ -113,30 +117,37 @@ end
 local RECENT = 8
 local recent = setmetatable({}, { __mode = 'v' })
 local last = 0
--- _setVertices works the numbers out in spare[n], a table that becomes the shape's when no
--- recent one matches (then the next shape of n vertices makes a new one), so that nothing is
--- copied and nothing allocated when one matches; for n up to SPARE (a shape with more makes
--- its table: a spare kept for it would be large).
+-- _setVertices works the numbers out in spare[m] (m: how many: 4n and the sizes), a table that
+-- becomes the shape's when no recent one matches (then the next shape of that many numbers
+-- makes a new one), so that nothing is copied and nothing allocated when one matches; for n up
+-- to SPARE (a shape with more makes its table: a spare kept for it would be large).
 local SPARE = 16
 local spare = {}
+local mathType = math.type -- luacheck: ignore 143 (Lua 5.3+: integers and floats)
 
--- Are g[1..m] and l[1..m] the same numbers, and g no longer? (Every number is a float; the
--- sign of a zero is compared too, so that a shared table gives the results an own one would.)
-local function sameGeometry(g, l, m)
+-- Are g[1..m] and l[1..m] the same numbers, and g no longer? The first 4n are floats (what
+-- _setVertices works out), the rest the class's sizes, as the game gave them: an integer and
+-- a float of the same value differ there on Lua 5.3+. The sign of a zero is compared too, so
+-- that a shared table gives the results an own one would.
+local function sameGeometry(g, l, m, n4)
   if g[m + 1] ~= nil then return false end -- (a shorter g fails below: nil is no number)
-  for k = 1, m do
+  for k = 1, n4 do
     local a, b = g[k], l[k]
     if a ~= b or (a == 0 and 1 / a ~= 1 / b) then return false end
+  end
+  for k = n4 + 1, m do
+    local a, b = g[k], l[k]
+    if a ~= b or (a == 0 and 1 / a ~= 1 / b) or (mathType and mathType(a) ~= mathType(b)) then return false end
   end
   return true
 end
 
--- The recent table with the numbers l[1..m], or nil.
-local function recentMatch(l, m)
+-- The recent table with the numbers l[1..m], of which 4n are vertices and normals, or nil.
+local function recentMatch(l, m, n4)
   local l1, j = l[1], last
   for _ = 1, RECENT do -- (the newest first)
     local g = recent[j]
-    if g and g[1] == l1 and sameGeometry(g, l, m) then return g end
+    if g and g[1] == l1 and sameGeometry(g, l, m, n4) then return g end
     j = j > 1 and j - 1 or RECENT
   end
   return nil
@@ -156,7 +167,7 @@ end
 ---@return number[]
 function VertexShape._shareGeometry(l, n)
   local m = 4 * n
-  local g = recentMatch(l, m)
+  local g = recentMatch(l, m, m)
   if g then return g end
   g = tnew and tnew(m, 0) or {} -- (LuaJIT: no room to spare past 4n)
   for k = 1, m do g[k] = l[k] end
@@ -164,11 +175,38 @@ function VertexShape._shareGeometry(l, n)
   return g
 end
 
+-- The sizes a subclass gives ConvexPolygon.new for the shape it is building (_sizesNext).
+local next1, next2, next3 = nil, nil, nil
+
+--- (internal) The sizes (see the header) of the shape that the next ConvexPolygon.new builds:
+--- a subclass that calls it says them just before (nothing runs in between: ConvexPolygon.new
+--- takes them first thing, so that no error can leave them for another shape).
+---@param size1 number|nil
+---@param size2 number|nil
+---@param size3 number|nil
+function VertexShape._sizesNext(size1, size2, size3) next1, next2, next3 = size1, size2, size3 end
+
+--- (internal) Take the sizes _sizesNext left (nil when none), leaving none.
+---@return number|nil, number|nil, number|nil
+function VertexShape._takeSizes()
+  local a, b, c = next1, next2, next3
+  next1, next2, next3 = nil, nil, nil
+  return a, b, c
+end
+
+--- (internal) The class's sizes kept in the local geometry (see the header), nil where none.
+---@return number|nil, number|nil, number|nil
+function VertexShape:_sizes()
+  local l, m = self._l, 4 * self[COUNT]
+  return l[m + 1], l[m + 2], l[m + 3]
+end
+
 --- (internal) Give the shape a local geometry of its own, a copy no other shape shares, and
 --- return it: for code that changes it in place (S.pace's queryRect probe).
 ---@return number[]
 function VertexShape:_ownGeometry()
   local l, m = self._l, 4 * self[COUNT]
+  while l[m + 1] ~= nil do m = m + 1 end -- (the sizes too)
   local own = tnew and tnew(m, 0) or {}
   for k = 1, m do own[k] = l[k] end
   self._l = own
@@ -176,11 +214,14 @@ function VertexShape:_ownGeometry()
 end
 
 --- Store world-space vertices xs, ys (count n, positive winding, validated) as local
---- geometry about the centroid (cx, cy), with the given unscaled area; the slot SHORT gets the
---- shortest edge (for Shape:_checkNew, which the constructor calls next).
-function VertexShape:_setVertices(xs, ys, n, cx, cy, area)
-  local l = spare[n] -- (worked out here, then shared: see `spare`)
-  if not l then l = tnew and tnew(4 * n, 0) or {} end -- (LuaJIT: no room to spare past 4n)
+--- geometry about the centroid (cx, cy), with the given unscaled area and the class's sizes
+--- (up to 3 numbers, nil for none: see the header); the slot SHORT gets the shortest edge (for
+--- Shape:_checkNew, which the constructor calls next).
+function VertexShape:_setVertices(xs, ys, n, cx, cy, area, size1, size2, size3)
+  local n4 = 4 * n
+  local m = size3 ~= nil and n4 + 3 or size2 ~= nil and n4 + 2 or size1 ~= nil and n4 + 1 or n4
+  local l = spare[m] -- (worked out here, then shared: see `spare`)
+  if not l then l = tnew and tnew(m, 0) or {} end -- (LuaJIT: no room to spare past the numbers)
   local r2 = 0
   for i = 1, n do
     local x, y = xs[i] - cx, ys[i] - cy
@@ -198,27 +239,31 @@ function VertexShape:_setVertices(xs, ys, n, cx, cy, area)
       l[k + 2], l[k + 3] = ey / len, -ex / len
     else -- (an edge too short or too long for its square: scaled, still unit; see limits.lua)
       local nx, ny = unit(ey, -ex)
-      l[k + 2], l[k + 3] = nx or 0.0, ny or -1.0 -- (floats, as every number here: see sameGeometry)
+      l[k + 2], l[k + 3] = nx or 0.0, ny or -1.0 -- (floats, as every vertex and normal: see sameGeometry)
     end
     -- the shortest edge, from the coordinates as given (what the constructors check)
-    local m = i < n and i + 1 or 1
-    local e = length(xs[m] - xs[i], ys[m] - ys[i])
+    local o = i < n and i + 1 or 1
+    local e = length(xs[o] - xs[i], ys[o] - ys[i])
     if e < short then short = e end
   end
   local size = layout.size(n)
   for k = 1, size do self[k] = 0 end
   for k = #self, size + 1, -1 do self[k] = nil end
   self[HALF] = symmetricHalf(l, n)
-  local g = recentMatch(l, 4 * n)
+  if m > n4 then -- (only the sizes given: Lua 5.1 keeps a key set to nil)
+    l[n4 + 1] = size1
+    if m > n4 + 1 then l[n4 + 2] = size2 end
+    if m > n4 + 2 then l[n4 + 3] = size3 end
+  end
+  local g = recentMatch(l, m, n4)
   if g then
-    if n <= SPARE then spare[n] = l end
+    if n <= SPARE then spare[m] = l end
   else
     g = l
-    spare[n] = nil
+    spare[m] = nil
     remember(g)
   end
   self[COUNT], self._l = n, g
-  self._seams = false -- (see the header: an own field, read per leaf by the collider queries)
   self[AREA], self[RADIUS], self[SHORT] = area, sqrt(r2), short
   self[ROUND] = 0
   -- (no refresh yet: see _refresh and _movedBounds)

@@ -1,6 +1,7 @@
 --- An ellipse, approximated by an inscribed polygon.
 local ROOT = (...):match('^(.-)%.shapes%.[^%.]+$')
 local ConvexPolygon = require(ROOT .. '.shapes.ConvexPolygon')
+local VertexShape = require(ROOT .. '.base.VertexShape')
 local check = require(ROOT .. '.check')
 local layout = require(ROOT .. '.base.layout')
 local ANGLE, SCALE = layout.ANGLE, layout.SCALE
@@ -38,7 +39,7 @@ function Ellipse:new(x, y, a, b, n, angle)
     local t = 2 * pi * (k - 1) / n
     pts[2 * k - 1], pts[2 * k] = x + a * cos(t), y + b * sin(t)
   end
-  self._a, self._b, self._n = a, b, n
+  VertexShape._sizesNext(a, b, n) -- (its sizes: unpack's)
   Ellipse.super.new(self, pts)
   self:_placeCentroid(x, y) -- the exact centre
   if angle ~= 0 then self:rotate(angle) end
@@ -50,7 +51,8 @@ function Ellipse:unpack()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:unpack') end
   local s = self[SCALE]
   local cx, cy = self:getCentroid()
-  return cx, cy, self._a * s, self._b * s, self._n, self[ANGLE]
+  local a, b, n = self:_sizes()
+  return cx, cy, a * s, b * s, n, self[ANGLE]
 end
 
 return Ellipse

@@ -1158,7 +1158,8 @@ local function queryRectOf(self, x, y, w, h, filterArg, out)
   local hw, hh = w / 2, h / 2
   local l = probe._l
   l[1], l[2], l[5], l[6], l[9], l[10], l[13], l[14] = -hw, -hh, hw, -hh, hw, hh, -hw, hh
-  probe._w, probe._h, probe[AREA], probe[RADIUS] = w, h, w * h, sqrt(hw * hw + hh * hh)
+  -- (and its sizes, width and height, after its 4 vertices' 16 numbers: VertexShape.lua)
+  l[17], l[18], probe[AREA], probe[RADIUS] = w, h, w * h, sqrt(hw * hw + hh * hh)
   probe[X], probe[Y] = x + hw, y + hh
   probe:_touch()
   return overlapping(self, level, probe, filterArg, out)
