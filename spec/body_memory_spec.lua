@@ -67,6 +67,11 @@ describe('a body\'s memory', function()
     local want = tableBytes(layout.CSIZE, named(c)) + listBytes + tableBytes(layout.size(4), named(shape))
     local got = bytesPer(function(i) return T.Rectangle(3 * i, 0, 2, 2) end)
     assert.is_true(got <= want + 1, ('%.1f bytes a collider, its smallest tables take %.1f'):format(got, want))
+    -- each of another size: its own local geometry too, 16 numbers and its 2 sizes
+    local geometry = tableBytes(4 * 4 + 2, 0)
+    local each = bytesPer(function(i) return T.Rectangle(3 * i, 0, 2 + i / 1024, 2) end)
+    assert.is_true(each <= want + geometry + 1,
+      ('%.1f bytes a collider of its own size, its smallest tables take %.1f'):format(each, want + geometry))
   end)
 
   it('a body does not grow when it is added to a space, queried and collided', function()

@@ -125,9 +125,22 @@ end
 ---@param y number
 function Shape:_placeCentroid(x, y) self[X], self[Y] = x + 0.0, y + 0.0 end
 
--- Zeros for Shape._slots to copy: as many as the largest shape of VertexShape._alloc has slots.
+-- Zeros for Shape._slots and Shape._numbers to copy: as many as the largest shape of
+-- VertexShape._alloc has slots.
 local ZEROS = {}
 for k = 1, layout.size(64) do ZEROS[k] = 0 end
+
+--- A table for `m` numbers (zeros, or nil on LuaJIT) whose array part has room for m and no
+--- more, so that filling it lays nothing out anew: on the VMs other than LuaJIT a table
+--- filled from empty doubles its array part as it goes (18 numbers take 32 slots of 16 bytes
+--- on Lua 5.4). Above a few hundred numbers, an empty table, which grows as it is filled.
+---@param m integer
+---@return table
+function Shape._numbers(m)
+  if tnew then return tnew(m, 0) end
+  if m <= #ZEROS then return { unpack(ZEROS, 1, m) } end
+  return {}
+end
 
 -- Whether the next shape made is for a single-shape collider (Shape._forCollider).
 local forCollider = false

@@ -52,7 +52,7 @@ local NCOS, NSIN, RADIUS = layout.NCOS, layout.NSIN, layout.RADIUS
 local ROUND, RSCALE, RX, RY, SCALE = layout.ROUND, layout.RSCALE, layout.RX, layout.RY, layout.SCALE
 local SHORT, SIN = layout.SHORT, layout.SIN
 local limits = require(ROOT .. '.limits')
-local tnew = require(ROOT .. '.compat').tableNew
+local numbers = Shape._numbers
 
 local MINX, MINY, MAXX, MAXY, R = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY, layout.R
 local X, Y = layout.X, layout.Y
@@ -169,7 +169,7 @@ function VertexShape._shareGeometry(l, n)
   local m = 4 * n
   local g = recentMatch(l, m, m)
   if g then return g end
-  g = tnew and tnew(m, 0) or {} -- (LuaJIT: no room to spare past 4n)
+  g = numbers(m)
   for k = 1, m do g[k] = l[k] end
   remember(g)
   return g
@@ -207,7 +207,7 @@ end
 function VertexShape:_ownGeometry()
   local l, m = self._l, 4 * self[COUNT]
   while l[m + 1] ~= nil do m = m + 1 end -- (the sizes too)
-  local own = tnew and tnew(m, 0) or {}
+  local own = numbers(m)
   for k = 1, m do own[k] = l[k] end
   self._l = own
   return own
@@ -221,7 +221,7 @@ function VertexShape:_setVertices(xs, ys, n, cx, cy, area, size1, size2, size3)
   local n4 = 4 * n
   local m = size3 ~= nil and n4 + 3 or size2 ~= nil and n4 + 2 or size1 ~= nil and n4 + 1 or n4
   local l = spare[m] -- (worked out here, then shared: see `spare`)
-  if not l then l = tnew and tnew(m, 0) or {} end -- (LuaJIT: no room to spare past the numbers)
+  if not l then l = numbers(m) end
   local r2 = 0
   for i = 1, n do
     local x, y = xs[i] - cx, ys[i] - cy
