@@ -322,6 +322,46 @@ function VertexShape:_refresh()
   self[DIRTY] = false
 end
 
+--- Write the bounds of a shape never refreshed (its slot RX is false) in its bounds slots,
+--- the very numbers _refresh would (the same arithmetic), without its vertex records: they
+--- wait, the shape staying dirty, for the first reader that needs them (the narrow phase, a
+--- ray, a getter), which refreshes it. For S.pace and a collider's bounds, which need only a
+--- box for a body just built and added: most of a level is never tested. (A shape refreshed
+--- before keeps its last bounds for _movedBounds, which reads them with the pose they were
+--- made for: it is refreshed instead; see VertexShape.freshBounds.)
+function VertexShape:_freshBounds()
+  local n = self[COUNT]
+  local c, s, k = self[COS], self[SIN], self[SCALE]
+  local x0, y0 = self[X], self[Y]
+  local l = self._l
+  local minx, miny, maxx, maxy = huge, huge, -huge, -huge
+  local sc, ss = c * k, s * k
+  for i = 1, n do
+    local q = 4 * i - 3
+    local lx, ly = l[q], l[q + 1]
+    local px, py = x0 + sc * lx - ss * ly, y0 + ss * lx + sc * ly -- (as _refresh)
+    if px < minx then minx = px end
+    if px > maxx then maxx = px end
+    if py < miny then miny = py end
+    if py > maxy then maxy = py end
+  end
+  local r = self[ROUND] * k
+  self[MINX], self[MINY], self[MAXX], self[MAXY] = minx - r, miny - r, maxx + r, maxy + r
+end
+
+--- (internal) Bring a dirty shape's bounds slots up to date: by _freshBounds when it was
+--- never refreshed and its class refreshes as VertexShape does (a class with a _refresh of its
+--- own may bound itself otherwise), else by its _refresh. For the readers that need the bounds
+--- alone (strike/space/Space.lua, colliders/Collider.lua).
+---@param shape strike.Shape a dirty shape
+function VertexShape.freshBounds(shape)
+  if shape[RX] == false and shape._refresh == VertexShape._refresh then
+    shape:_freshBounds()
+  else
+    shape:_refresh()
+  end
+end
+
 --- The bounds of a dirty shape that has only moved since its last refresh (same angle and
 --- scale), without refreshing it: the last bounds moved by the same vector, grown on every
 --- side by a rounding's worth, so they hold the bounds a refresh would compute. Returns nil

@@ -53,6 +53,7 @@
 local ROOT = (...):match('^(.-)%.colliders%.[^%.]+$')
 local Object = require(ROOT .. '.class')
 local Shape = require(ROOT .. '.base.Shape')
+local freshBounds = require(ROOT .. '.base.VertexShape').freshBounds
 local check = require(ROOT .. '.check')
 local compat = require(ROOT .. '.compat')
 local unpack, tnew = compat.unpack, compat.tableNew
@@ -448,7 +449,7 @@ local function refresh(self, depth)
       end
       k = c[CCOUNT] -- (an empty nested collider bounds nothing)
     elseif c[DIRTY] then
-      c:_refresh()
+      freshBounds(c) -- (the bounds alone, for a leaf never refreshed: its vertices wait)
     end
     if k > 0 then
       local x0, y0, x1, y1 = c[MINX], c[MINY], c[MAXX], c[MAXY]

@@ -30,6 +30,7 @@ local ray = require(ROOT .. '.collide.ray')
 local Collider = require(ROOT .. '.colliders.Collider')
 local reserved = require(ROOT .. '.reserved')
 local spaces = require(ROOT .. '.base.Shape')._spaces
+local freshBounds = require(ROOT .. '.base.VertexShape').freshBounds
 
 local collide = compound.collide
 local fail, describe, what, badSelf = check.fail, check.describe, check.what, check.badSelf
@@ -278,10 +279,11 @@ local function flush(self)
         local x0, y0, x1, y1
         if b[DIRTY] then
           -- (a polygon that only moved: its last bounds, moved; its vertices wait for the
-          -- narrow phase, which refreshes only the shapes in a pair whose boxes meet)
+          -- narrow phase, which refreshes only the shapes in a pair whose boxes meet; and so
+          -- do those of a polygon never refreshed: freshBounds)
           local movedBounds = b._movedBounds
           if movedBounds then x0, y0, x1, y1 = movedBounds(b) end
-          if not x0 then b:_refresh() end
+          if not x0 then freshBounds(b) end
         end
         if x0 then place(tree, id, x0, y0, x1, y1) else place(tree, id, b[MINX], b[MINY], b[MAXX], b[MAXY]) end
       else
@@ -364,7 +366,13 @@ function Space:add(body, opts)
   if other == self then fail('strike.Space:add: argument 1 is already in this space') end
   if other then fail('strike.Space:add: argument 1 is in another space; remove it from that one first') end
   local layer, mask, group, sensor = options('strike.Space:add', opts)
-  local id = self._tree:insert(body:getBounds())
+  local id
+  if body._pose and body[DIRTY] then -- (a shape: its bounds alone, as flush takes them)
+    freshBounds(body)
+    id = self._tree:insert(body[MINX], body[MINY], body[MAXX], body[MAXY])
+  else
+    id = self._tree:insert(body:getBounds()) -- (a collider's bounds take its leaves' alone too)
+  end
   self._version = self._version + 1
   if self._nextRank >= K - 1 then renumber(self) end
   local r = self._nextRank + 1
