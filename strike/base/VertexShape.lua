@@ -247,7 +247,9 @@ function VertexShape:_setVertices(xs, ys, n, cx, cy, area, size1, size2, size3)
     if e < short then short = e end
   end
   local size = layout.size(n)
-  for k = 1, size do self[k] = 0 end
+  if self[1] == nil then -- (zeros already when Shape._slots made it on a VM without table.new)
+    for k = 1, size do self[k] = 0 end
+  end
   for k = #self, size + 1, -1 do self[k] = nil end
   self[HALF] = symmetricHalf(l, n)
   if m > n4 then -- (only the sizes given: Lua 5.1 keeps a key set to nil)
