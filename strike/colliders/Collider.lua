@@ -27,6 +27,10 @@
 ---   `_clean` (collider)   bounds and radius (slots),    the same as `_massOK`        refresh (getBbox, getBounds,
 ---                         and CCOUNT too                                             getRadius, calcAreaCentroid)
 ---
+--- A reader that needs a dirty shape's bounds alone (a collider's `refresh`, S.pace) may take
+--- them without its vertex records when it was never refreshed (VertexShape.freshBounds): the
+--- shape stays dirty, and its first other reader refreshes it, to the same bounds.
+---
 --- Invariant: when a collider's `_massOK` or `_clean` is false, so is that flag on every
 --- enclosing collider. Clearing keeps it by walking up from the change to the root, and a
 --- move (Shape:_touch) may stop at the first collider whose flags are already false
