@@ -37,16 +37,15 @@ describe('a body added to a space', function()
     local space = S.pace()
     budget.loop(600, function(case)
       local where = ('seed %d case %d'):format(SEED, case)
-      local shapes, body = {}, nil
+      local shapes = {}
       local shape = randomShape(rng)
       if rng:next() < 0.3 then shape:scale(rng:range(0.5, 3)) end
       shapes[1] = shape
       local how = rng:int(1, 3)
-      if how == 1 then
-        body = shape
-      elseif how == 2 then
+      local body = shape
+      if how == 2 then
         body = T.Collider(shape)
-      else
+      elseif how == 3 then
         shapes[2] = randomShape(rng)
         body = T.Collider(shape, T.Collider(shapes[2]))
       end
