@@ -330,7 +330,7 @@ end
 --- ray, a getter), which refreshes it. For S.pace and a collider's bounds, which need only a
 --- box for a body just built and added: most of a level is never tested. (A shape refreshed
 --- before keeps its last bounds for _movedBounds, which reads them with the pose they were
---- made for: it is refreshed instead; see VertexShape.freshBounds.)
+--- made for: it is refreshed instead; see VertexShape._boundsOnly.)
 function VertexShape:_freshBounds()
   local n = self[COUNT]
   local c, s, k = self[COS], self[SIN], self[SCALE]
@@ -356,7 +356,7 @@ end
 --- own may bound itself otherwise), else by its _refresh. For the readers that need the bounds
 --- alone (strike/space/Space.lua, colliders/Collider.lua).
 ---@param shape strike.Shape a dirty shape
-function VertexShape.freshBounds(shape)
+function VertexShape._boundsOnly(shape)
   if shape[RX] == false and shape._refresh == VertexShape._refresh then
     shape:_freshBounds()
   else

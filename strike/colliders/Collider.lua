@@ -28,7 +28,7 @@
 ---                         and CCOUNT too                                             getRadius, calcAreaCentroid)
 ---
 --- A reader that needs a dirty shape's bounds alone (a collider's `refresh`, S.pace) may take
---- them without its vertex records when it was never refreshed (VertexShape.freshBounds): the
+--- them without its vertex records when it was never refreshed (VertexShape._boundsOnly): the
 --- shape stays dirty, and its first other reader refreshes it, to the same bounds.
 ---
 --- Invariant: when a collider's `_massOK` or `_clean` is false, so is that flag on every
@@ -57,7 +57,7 @@
 local ROOT = (...):match('^(.-)%.colliders%.[^%.]+$')
 local Object = require(ROOT .. '.class')
 local Shape = require(ROOT .. '.base.Shape')
-local freshBounds = require(ROOT .. '.base.VertexShape').freshBounds
+local boundsOnly = require(ROOT .. '.base.VertexShape')._boundsOnly
 local check = require(ROOT .. '.check')
 local compat = require(ROOT .. '.compat')
 local unpack, tnew = compat.unpack, compat.tableNew
@@ -453,7 +453,7 @@ local function refresh(self, depth)
       end
       k = c[CCOUNT] -- (an empty nested collider bounds nothing)
     elseif c[DIRTY] then
-      freshBounds(c) -- (the bounds alone, for a leaf never refreshed: its vertices wait)
+      boundsOnly(c) -- (the bounds alone, for a leaf never refreshed: its vertices wait)
     end
     if k > 0 then
       local x0, y0, x1, y1 = c[MINX], c[MINY], c[MAXX], c[MAXY]

@@ -30,7 +30,7 @@ local ray = require(ROOT .. '.collide.ray')
 local Collider = require(ROOT .. '.colliders.Collider')
 local reserved = require(ROOT .. '.reserved')
 local spaces = require(ROOT .. '.base.Shape')._spaces
-local freshBounds = require(ROOT .. '.base.VertexShape').freshBounds
+local boundsOnly = require(ROOT .. '.base.VertexShape')._boundsOnly
 
 local collide = compound.collide
 local fail, describe, what, badSelf = check.fail, check.describe, check.what, check.badSelf
@@ -280,10 +280,10 @@ local function flush(self)
         if b[DIRTY] then
           -- (a polygon that only moved: its last bounds, moved; its vertices wait for the
           -- narrow phase, which refreshes only the shapes in a pair whose boxes meet; and so
-          -- do those of a polygon never refreshed: freshBounds)
+          -- do those of a polygon never refreshed: boundsOnly)
           local movedBounds = b._movedBounds
           if movedBounds then x0, y0, x1, y1 = movedBounds(b) end
-          if not x0 then freshBounds(b) end
+          if not x0 then boundsOnly(b) end
         end
         if x0 then place(tree, id, x0, y0, x1, y1) else place(tree, id, b[MINX], b[MINY], b[MAXX], b[MAXY]) end
       else
@@ -368,7 +368,7 @@ function Space:add(body, opts)
   local layer, mask, group, sensor = options('strike.Space:add', opts)
   local id
   if body._pose and body[DIRTY] then -- (a shape: its bounds alone, as flush takes them)
-    freshBounds(body)
+    boundsOnly(body)
     id = self._tree:insert(body[MINX], body[MINY], body[MAXX], body[MAXY])
   else
     id = self._tree:insert(body:getBounds()) -- (a collider's bounds take its leaves' alone too)
