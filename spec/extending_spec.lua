@@ -4,6 +4,7 @@
 local S = require('strike')
 local expect = require('spec.helpers.expect')
 local near, nearList, raisesAt = expect.near, expect.nearList, expect.raisesAt
+local layout = require('strike.base.layout')
 local pi = math.pi
 
 describe('a user-defined shape', function()
@@ -84,6 +85,95 @@ describe('a user-defined shape', function()
     raisesAt(function() S.hapes.Bad = S.hapes.Circle(0, 0, 1) end, 'got table')
     raisesAt(function() S.hapes[1] = Trapezoid end, 'S.hapes names must be identifiers, got 1')
     raisesAt(function() S.trikers.Bad = Trapezoid end, 'S.trikers.Bad must be a class extending S.trikers.Collider')
+  end)
+end)
+
+describe('a single-shape collider of a registered class', function()
+  -- (S.trikers.X builds its shape and takes it without the checks of Collider:add, which a
+  -- shape built a moment ago passes: colliders/Collider.lua, _newSingle; one that would fail
+  -- them goes through Collider:add, with its errors)
+  local function triangle(self, x, y) S.hapes.ConvexPolygon.new(self, x, y, x + 1, y, x, y + 1) end
+
+  it('whose shape\'s constructor never built it is an error naming the class', function()
+    local Hollow = S.hapes.ConvexPolygon:extend()
+    function Hollow:new() end
+    S.hapes.SpecHollow = Hollow
+    raisesAt(function() local _ = S.trikers.SpecHollow(0, 0) end, 'argument 1 (a SpecHollow) was not built')
+  end)
+
+  it('whose shape\'s constructor put it in a collider or a space is an error', function()
+    local Held = S.hapes.ConvexPolygon:extend()
+    function Held:new(x, y)
+      triangle(self, x, y)
+      self.holder = S.trikers.Collider(self)
+    end
+    S.hapes.SpecHeld = Held
+    raisesAt(function() local _ = S.trikers.SpecHeld(0, 0) end, 'argument 1 already belongs to a collider')
+    local space = S.pace()
+    local Spaced = S.hapes.ConvexPolygon:extend()
+    function Spaced:new(x, y)
+      triangle(self, x, y)
+      space:add(self)
+    end
+    S.hapes.SpecSpaced = Spaced
+    raisesAt(function() local _ = S.trikers.SpecSpaced(0, 0) end, 'argument 1 is in a space')
+    -- (a space's fields set by the game, one without the other: an error naming the field)
+    local Sid = S.hapes.ConvexPolygon:extend()
+    function Sid:new(x, y)
+      triangle(self, x, y)
+      self._sid = 3
+    end
+    S.hapes.SpecSid = Sid
+    raisesAt(function() local _ = S.trikers.SpecSid(0, 0) end, "argument 1's field _sid was changed (now 3)")
+    local Where = S.hapes.ConvexPolygon:extend()
+    function Where:new(x, y)
+      triangle(self, x, y)
+      self._space = {}
+    end
+    S.hapes.SpecWhere = Where
+    raisesAt(function() local _ = S.trikers.SpecWhere(0, 0) end, "argument 1's field _space was changed (now table)")
+  end)
+
+  it('whose class makes something that is not a shape is an error', function()
+    local Base = S.hapes.ConvexPolygon:extend()
+    local Odd = Base:extend()
+    getmetatable(Odd).__call = function() return 'nope' end -- (Base's: how Odd(...) is made)
+    S.hapes.SpecOdd = Odd
+    raisesAt(function() local _ = S.trikers.SpecOdd(0, 0) end, 'a strike shape or collider, got string "nope"')
+    local Odder = Base:extend()
+    getmetatable(Odder).__call = function() return { _pose = 1 } end -- (a table, with a pose, of no class)
+    S.hapes.SpecOdder = Odder
+    raisesAt(function() local _ = S.trikers.SpecOdder(0, 0) end, 'a strike shape or collider, got table')
+  end)
+
+  it('of a subclass with an add of its own gets its shape through that add', function()
+    local Counted = S.trikers.Circle:extend()
+    function Counted:add(...)
+      self.adds = (self.adds or 0) + 1
+      return Counted.super.add(self, ...)
+    end
+    local c = Counted(0, 0, 1)
+    assert.equals(1, c.adds)
+    assert.equals(1, c:getShapeCount())
+  end)
+
+  it('holds its shape as Collider.new would have made it', function()
+    local c = S.trikers.Rectangle(3, 4, 10, 6, 0.5)
+    local s = c:unpack()
+    assert.equals(c, s:getParent())
+    assert.equals(s, c._shapes[1])
+    assert.equals(c, c._shapes[0])
+    assert.is_nil(c._shapes[2])
+    assert.same({ -1, false, false, false }, { c._nleaves, c._massOK, c._clean, c._single })
+    -- (the cache slots as a collider of the same shape has them, but the angle, which a
+    -- single-shape collider takes from its shape)
+    local ref = S.trikers.Collider(S.hapes.Rectangle(3, 4, 10, 6, 0.5))
+    for k = 1, layout.CSIZE do
+      if k ~= layout.CANGLE then assert.equals(ref[k], c[k], 'slot ' .. k) end
+    end
+    assert.equals(0.5, c[layout.CANGLE])
+    nearList({ c:getBbox() }, { ref:getBbox() }, 0)
+    near(c:getAngle(), 0.5, 0)
   end)
 end)
 

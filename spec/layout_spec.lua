@@ -12,14 +12,9 @@ local H, T = S.hapes, S.trikers
 -- Every one starts with `_`: the other names are the game's (README, "Your data on bodies";
 -- spec/game_fields_spec.lua).
 local COMMON = { _pose = true, _l = true, _seams = true, _kind = true, _parent = true, _space = true, _sid = true }
--- Each class's own data (what its unpack needs).
-local OWN = {
-  Rectangle = { _w = true, _h = true },
-  RegularPolygon = { _n = true, _radius = true },
-  Ellipse = { _a = true, _b = true, _n = true },
-  Circle = { _r = true },
-  Point = { _r = true },
-}
+-- Each class's own data (what its unpack needs): none, now that it is kept in the local
+-- geometry (`_l`, strike/base/VertexShape.lua) or in the slots (a circle's radius).
+local OWN = {}
 
 local function namedKeys(s)
   local keys = {}
@@ -97,7 +92,9 @@ describe('the shape data contract (layout.lua)', function()
     end)
   end)
 
-  it('a shape has no named fields beyond the documented few (8 at most: LuaJIT\'s 8-node hash)', function()
+  it('a shape has no named fields beyond the documented few (4 in a collider, 5 bare in a space)', function()
+    -- (_pose, _kind, _l but for a circle, then _parent, or a space's _space and _sid: a
+    -- collider's shape fits LuaJIT's 4-node hash, a body's the 8-node one)
     eachUsedShape(function(name, s, where)
       local keys = namedKeys(s)
       local own = OWN[name] or {}
@@ -105,10 +102,25 @@ describe('the shape data contract (layout.lua)', function()
         assert.is_true(COMMON[k] or own[k] or false,
           ('%s (%s) has the named field %s: strike\'s scalars belong in layout.lua\'s slots'):format(name, where, k))
       end
-      -- (8 fit LuaJIT's 8-node hash; an Ellipse, with its three numbers, in a space has 9)
-      local most = name == 'Ellipse' and 9 or 8
-      assert.is_true(#keys <= most, ('%s has %d named fields: %s'):format(name, #keys, table.concat(keys, ' ')))
+      local most = where == 'in a collider' and 4 or 5
+      assert.is_true(#keys <= most, ('%s (%s) has %d named fields: %s'):format(name, where, #keys,
+        table.concat(keys, ' ')))
     end)
+  end)
+
+  it('a single-shape collider\'s shape has room for 4 named fields, and needs no more', function()
+    -- (Shape._forCollider: its table is made with a 4-node hash; spec/body_memory_spec.lua
+    -- counts the bytes)
+    for _, make in ipairs({
+      function() return T.Rectangle(0, 0, 10, 20) end, function() return T.Rectangle(0, 0, 10, 20, 0.2, 3) end,
+      function() return T.RegularPolygon(0, 0, 6, 10) end, function() return T.Ellipse(0, 0, 10, 5) end,
+      function() return T.Circle(0, 0, 5) end, function() return T.Capsule(0, 0, 6, 20) end,
+    }) do
+      local c = make()
+      local s = exercise(c:unpack(), c)
+      local keys = namedKeys(s)
+      assert.is_true(#keys <= 4, table.concat(keys, ' '))
+    end
   end)
 
   it('a chain segment keeps its neighbours\' data in slots too, after its vertex records', function()

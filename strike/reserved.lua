@@ -6,8 +6,9 @@
 ---   _pose     the pose stamp (a number, new on every move)            base/Shape.lua
 ---   _kind     the kind the narrow phase dispatches on                 base/Shape.lua
 ---   _parent   the collider holding it, or nil                         colliders/Collider.lua
----   _seams    false, or the seam faces of a compound's piece          base/VertexShape.lua
----   _l, _r, _w, _h, _a, _b, _n, _radius   the class's local geometry and sizes
+---   _seams    the seam faces of a compound's piece (false, or none:   base/VertexShape.lua
+---             then it reads its class's false)
+---   _l        its local geometry and its class's sizes, often shared  base/VertexShape.lua
 --- on a collider:
 ---   _shapes   its children, a list whose slot 0 names the collider   colliders/Collider.lua
 ---   _parent, _leaves, _nleaves, _leafPos, _single, _massOK, _clean, _loop   (the caches)
@@ -100,7 +101,7 @@ function reserved.fieldOf(v)
       local kind = rawget(v, '_kind')
       if kind == nil or kinds[kind] == nil then return '_kind', kind end
       local seams = rawget(v, '_seams')
-      if seams ~= false and type(seams) ~= 'table' then return '_seams', seams end
+      if seams ~= nil and seams ~= false and type(seams) ~= 'table' then return '_seams', seams end
     end
     -- (a shape has no children: a `_shapes` would make strike take it for a collider)
     if rawget(v, '_shapes') ~= nil then return '_shapes', rawget(v, '_shapes') end

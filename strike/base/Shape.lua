@@ -17,7 +17,8 @@ local RADIUS, SCALE, SHORT, SIN = layout.RADIUS, layout.SCALE, layout.SHORT, lay
 local vec = require(ROOT .. '.vec')
 local limits = require(ROOT .. '.limits')
 local kinds = require(ROOT .. '.collide.dispatch').kind
-local tnew = require(ROOT .. '.compat').tableNew
+local compat = require(ROOT .. '.compat')
+local tnew, unpack = compat.tableNew, compat.unpack
 
 local X, Y = layout.X, layout.Y
 local MINX, MINY, MAXX, MAXY = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY
@@ -40,6 +41,8 @@ Shape.name = 'Shape'
 --- set: strike reads those from the class, and its own fields start with `_`; see
 --- strike/reserved.lua).
 Shape._type = 'shape'
+--- No face of a shape is a seam unless it has `_seams` of its own (base/VertexShape.lua).
+Shape._seams = false
 
 --- What every shape class must provide (the base class provides the transforms and the
 --- getters of the pose). `kind` must name a kind registered in strike/collide/dispatch.lua.
@@ -66,6 +69,10 @@ function Shape.checkClass(cls, what)
   if not kinds[cls.kind] then
     fail(('%s has the kind %s, which no narrow phase is registered for'):format(what, check.describe(cls.kind)))
   end
+  -- (a shape's `_seams` is its class's false unless it has faces marked (VertexShape.lua): put
+  -- on the class itself, so that reading it from an instance goes one step up, not up the
+  -- whole chain of classes)
+  if rawget(cls, '_seams') == nil then rawset(cls, '_seams', false) end
   complete[cls] = true
 end
 
@@ -100,9 +107,6 @@ function Shape:_setPose(x, y)
   -- an own copy of the class's kind (or of the one a rounded shape set): the dispatch reads
   -- it every test
   if rawget(self, '_kind') == nil then self._kind = cls.kind end
-  -- (an own `_seams`, false unless a compound marks faces: the collider queries read it per
-  -- leaf, and a missing field would cost a walk up the class chain; see VertexShape.lua)
-  if rawget(self, '_seams') == nil then self._seams = false end
   if self[1] == nil then -- (a table not made by _alloc, which fills the header with zeros)
     for k = 1, layout.SHAPE_HEADER do
       if self[k] == nil then self[k] = 0 end -- (refreshed before any use: the shape starts dirty)
@@ -121,14 +125,63 @@ end
 ---@param y number
 function Shape:_placeCentroid(x, y) self[X], self[Y] = x + 0.0, y + 0.0 end
 
---- The empty instance `Class(...)` fills (class.lua): room for the slots every shape has
---- (layout.lua) and for its few named fields, so that no table grows while it is built.
---- Kinds with vertex records ask for more (VertexShape).
+-- Zeros for Shape._slots and Shape._numbers to copy: as many as the largest shape of
+-- VertexShape._alloc has slots.
+local ZEROS = {}
+for k = 1, layout.size(64) do ZEROS[k] = 0 end
+
+--- A table for `m` numbers (zeros, or nil on LuaJIT) whose array part has room for m and no
+--- more, so that filling it lays nothing out anew: on the VMs other than LuaJIT a table
+--- filled from empty doubles its array part as it goes (18 numbers take 32 slots of 16 bytes
+--- on Lua 5.4). Above a few hundred numbers, an empty table, which grows as it is filled.
+---@param m integer
 ---@return table
-function Shape._alloc()
-  if tnew then return tnew(layout.SHAPE_HEADER, 8) end
-  return { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 }
+function Shape._numbers(m)
+  if tnew then return tnew(m, 0) end
+  if m <= #ZEROS then return { unpack(ZEROS, 1, m) } end
+  return {}
 end
+
+-- Whether the next shape made is for a single-shape collider (Shape._forCollider).
+local forCollider = false
+
+--- An empty shape with `size` array slots and room for its named fields, so that no table
+--- grows while it is built or used: a table that grows is laid out anew, which costs garbage
+--- and gives LuaJIT's compiled field reads two layouts of one class to guard against; and the
+--- new layout rounds its array part up to a power of two (64 slots on LuaJIT and Lua 5.4 for a
+--- rectangle's 43). Its named fields: `_pose`, `_kind`, `_l` (or none of a circle's) and its
+--- link, `_parent` in a collider or a space's `_space` and `_sid` (strike/reserved.lua): room
+--- for 8, or for 4 when the shape is made for a single-shape collider (Shape._forCollider), which
+--- keeps it. LuaJIT: table.new, its slots nil. The other VMs size a table only from a
+--- constructor: this one has the slots as zeros (copied by the last expression, which sizes the
+--- array part exactly) and names the fields (nil: it holds none of them yet, but its hash part
+--- is made for them; Lua 5.1 keeps those names in it, so they are the ones strike sets).
+---@param size integer
+---@return table
+function Shape._slots(size)
+  if forCollider then
+    forCollider = false
+    if tnew then return tnew(size, 4) end
+    return { _pose = nil, _kind = nil, _l = nil, _parent = nil, unpack(ZEROS, 1, size) }
+  end
+  if tnew then return tnew(size, 8) end
+  return { _pose = nil, _kind = nil, _l = nil, _parent = nil, _space = nil, _sid = nil, _seams = nil,
+    unpack(ZEROS, 1, size) }
+end
+
+--- (internal) Say whether the next shape made (its Shape._slots) is for a single-shape
+--- collider, which keeps it in its list and gives it no other link: room for 4 named fields
+--- then (colliders/single.lua, which says so just before it makes the shape, and that it is
+--- done just after). A shape that has more fields after all (taken out of the collider and
+--- added to a space) grows, as a table does, and is none the worse.
+---@param yes boolean
+function Shape._forCollider(yes) forCollider = yes end
+
+--- The empty instance `Class(...)` fills (class.lua): room for the slots every shape has
+--- (layout.lua) and for its few named fields (Shape._slots). Kinds with vertex records ask
+--- for more (VertexShape).
+---@return table
+function Shape._alloc() return Shape._slots(layout.SHAPE_HEADER) end
 
 --- What the slot SHORT measures (layout.lua: a shape's shortest length), for error messages.
 Shape._shortName = 'shortest length'

@@ -3,7 +3,14 @@
 ---   _l          local geometry, 4n numbers: vertex i's record starts at k = 4i - 3 and holds
 ---               the vertex relative to the centroid, unrotated and unscaled (l[k], l[k+1];
 ---               positive winding), and the unit outward normal of edge i, from vertex i to
----               vertex i + 1 (l[k+2], l[k+3])
+---               vertex i + 1 (l[k+2], l[k+3]); then the class's own sizes, up to 3 numbers
+---               (what its unpack gives back: a Rectangle's width and height, a RegularPolygon's
+---               n and radius, an Ellipse's a, b and n; ConvexPolygon.new's `sizes`). Never
+---               changed once built, so shapes share it: a shape built with the very numbers
+---               (to the bit, the sign of zero and, on Lua 5.3+, integer or float included) of
+---               one of the last few built takes that one's table, and a copy shares its
+---               original's. Code that changes a shape's local geometry in place first takes a
+---               copy of its own (_ownGeometry).
 ---   self[...]   world-space data, refreshed when dirty, in the shape's own array part: the
 ---               header every shape has, then one record per vertex (vertex, edge normal, edge
 ---               offset), laid out as strike/base/layout.lua says, with the shape's scalars
@@ -31,9 +38,11 @@
 ---               place in the compound it was built for, so they travel with it: copies share
 ---               the (never changed) table, transforms keep it (fractions do not change), and
 ---               a piece removed from its Concave keeps it, as do the pieces left (their faces
----               toward the removed one stay seams). Set on every instance, false included:
----               the ray queries read it per leaf hit, and a missing field would cost a walk
----               up the class chain. ConvexPolygon:merge carries it over (see _seamsFrom).
+---               toward the removed one stay seams). An instance has its own only when some
+---               face is a seam; the others read their class's false (Shape.checkClass puts
+---               it on every class, so that the ray queries, which read it per leaf hit, go one
+---               step up the class chain, not all the way). ConvexPolygon:merge carries it
+---               over (see _seamsFrom).
 local ROOT = (...):match('^(.-)%.base%.[^%.]+$')
 local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
@@ -43,7 +52,7 @@ local NCOS, NSIN, RADIUS = layout.NCOS, layout.NSIN, layout.RADIUS
 local ROUND, RSCALE, RX, RY, SCALE = layout.ROUND, layout.RSCALE, layout.RX, layout.RY, layout.SCALE
 local SHORT, SIN = layout.SHORT, layout.SIN
 local limits = require(ROOT .. '.limits')
-local tnew = require(ROOT .. '.compat').tableNew
+local numbers = Shape._numbers
 
 local MINX, MINY, MAXX, MAXY, R = layout.MINX, layout.MINY, layout.MAXX, layout.MAXY, layout.R
 local X, Y = layout.X, layout.Y
@@ -62,45 +71,26 @@ VertexShape.name = 'VertexShape'
 VertexShape._shortName = 'shortest edge'
 
 --- The empty instance `Class(...)` fills (class.lua): room for the slots of `n` vertices (by
---- default 5; a polygon with more grows once) and for a polygon's named fields (8: its own
---- are _pose, _l, _seams and _kind, then `_parent`, or a space's two, and a subclass's few).
+--- default 5; a polygon with more grows once) and for a polygon's named fields (Shape._slots).
 --- Subclasses that know their vertex count from their arguments pass it (ConvexPolygon,
---- RegularPolygon): a table that grows is laid out anew, and LuaJIT's compiled field reads
---- then meet two layouts of the same class where they would meet one.
+--- Rectangle, RegularPolygon): a table that grows is laid out anew.
 ---@param n integer|nil
 ---@return table
 function VertexShape._alloc(n)
-  if tnew then
-    if type(n) == 'number' and n >= 3 and n <= 64 and n % 1 == 0 then return tnew(layout.size(n), 8) end
-    return tnew(layout.size(5), 8)
-  end
-  return {
-    0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0,
-    0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0
-  } -- (layout.size(5) slots)
+  if type(n) == 'number' and n >= 3 and n <= 64 and n % 1 == 0 then return Shape._slots(layout.size(n)) end
+  return Shape._slots(layout.size(5))
 end
 
 --- The empty instance of a shape with two vertex records (edges, capsules), as an `_alloc`
 --- (class.lua; it ignores the constructor's arguments).
 ---@return table
-function VertexShape._alloc2()
-  if tnew then return tnew(layout.size(2), 8) end
-  return {
-    0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0
-  } -- (layout.size(2) slots)
-end
+function VertexShape._alloc2() return Shape._slots(layout.size(2)) end
 
---- An empty instance with `n` array slots (zeros) and room for 8 named fields, for a
---- subclass with slots of its own (ChainSegment). On the interpreters the first named field
---- lays the array out anew anyway, at a power of two.
+--- An empty instance with `n` array slots and room for 8 named fields, for a subclass with
+--- slots of its own (ChainSegment).
 ---@param n integer
 ---@return table
-function VertexShape._allocSlots(n)
-  if tnew then return tnew(n, 8) end
-  local t = {}
-  for k = 1, n do t[k] = 0 end
-  return t
-end
+function VertexShape._allocSlots(n) return Shape._slots(n) end
 
 -- Normals this close to antiparallel are made exactly antiparallel (a change far below
 -- any coordinate's rounding noise), so that opposite faces can share one projection.
@@ -118,11 +108,120 @@ local function symmetricHalf(l, n)
   return h
 end
 
+-- Local geometry (see the header). `recent` holds the last RECENT tables made, weakly (sharing
+-- is invisible: a shape gets the very numbers it would have had, so nothing depends on which
+-- are still there), `last` the slot of the newest. A level's tiles, a wave of enemies,
+-- bullets: shapes of one size come in runs, and among 20,000 16-by-12 rectangles at random
+-- places (bench/space.lua's memory section) the last table made matched 98 % of the time,
+-- one of the last 8 99 % (the rounding of the centroid leaves a few variants of the numbers).
+local RECENT = 8
+local recent = setmetatable({}, { __mode = 'v' })
+local last = 0
+-- _setVertices works the numbers out in spare[m] (m: how many: 4n and the sizes), a table that
+-- becomes the shape's when no recent one matches (then the next shape of that many numbers
+-- makes a new one), so that nothing is copied and nothing allocated when one matches; for n up
+-- to SPARE (a shape with more makes its table: a spare kept for it would be large).
+local SPARE = 16
+local spare = {}
+local mathType = math.type -- luacheck: ignore 143 (Lua 5.3+: integers and floats)
+
+-- Are g[1..m] and l[1..m] the same numbers, and g no longer? The first 4n are floats (what
+-- _setVertices works out), the rest the class's sizes, as the game gave them: an integer and
+-- a float of the same value differ there on Lua 5.3+. The sign of a zero is compared too, so
+-- that a shared table gives the results an own one would.
+local function sameGeometry(g, l, m, n4)
+  if g[m + 1] ~= nil then return false end -- (a shorter g fails below: nil is no number)
+  for k = 1, n4 do
+    local a, b = g[k], l[k]
+    if a ~= b or (a == 0 and 1 / a ~= 1 / b) then return false end
+  end
+  for k = n4 + 1, m do
+    local a, b = g[k], l[k]
+    if a ~= b or (a == 0 and 1 / a ~= 1 / b) or (mathType and mathType(a) ~= mathType(b)) then return false end
+  end
+  return true
+end
+
+-- The recent table with the numbers l[1..m], of which 4n are vertices and normals, or nil.
+local function recentMatch(l, m, n4)
+  local l1, j = l[1], last
+  for _ = 1, RECENT do -- (the newest first)
+    local g = recent[j]
+    if g and g[1] == l1 and sameGeometry(g, l, m, n4) then return g end
+    j = j > 1 and j - 1 or RECENT
+  end
+  return nil
+end
+
+-- Keep g among the recent tables.
+local function remember(g)
+  last = last < RECENT and last + 1 or 1
+  recent[last] = g
+end
+
+--- (internal) The local geometry of n vertices with the numbers l[1..4n] (see the header): one
+--- of the last few made when it has those very numbers, else a new table that copies them.
+--- `l` itself is never kept, so a caller may pass a scratch table.
+---@param l number[]
+---@param n integer
+---@return number[]
+function VertexShape._shareGeometry(l, n)
+  local m = 4 * n
+  local g = recentMatch(l, m, m)
+  if g then return g end
+  g = numbers(m)
+  for k = 1, m do g[k] = l[k] end
+  remember(g)
+  return g
+end
+
+-- The sizes a subclass gives ConvexPolygon.new for the shape it is building (_sizesNext).
+local next1, next2, next3 = nil, nil, nil
+
+--- (internal) The sizes (see the header) of the shape that the next ConvexPolygon.new builds:
+--- a subclass that calls it says them just before (nothing runs in between: ConvexPolygon.new
+--- takes them first thing, so that no error can leave them for another shape).
+---@param size1 number|nil
+---@param size2 number|nil
+---@param size3 number|nil
+function VertexShape._sizesNext(size1, size2, size3) next1, next2, next3 = size1, size2, size3 end
+
+--- (internal) Take the sizes _sizesNext left (nil when none), leaving none.
+---@return number|nil, number|nil, number|nil
+function VertexShape._takeSizes()
+  local a, b, c = next1, next2, next3
+  next1, next2, next3 = nil, nil, nil
+  return a, b, c
+end
+
+--- (internal) The class's sizes kept in the local geometry (see the header), nil where none.
+---@return number|nil, number|nil, number|nil
+function VertexShape:_sizes()
+  local l, m = self._l, 4 * self[COUNT]
+  return l[m + 1], l[m + 2], l[m + 3]
+end
+
+--- (internal) Give the shape a local geometry of its own, a copy no other shape shares, and
+--- return it: for code that changes it in place (S.pace's queryRect probe).
+---@return number[]
+function VertexShape:_ownGeometry()
+  local l, m = self._l, 4 * self[COUNT]
+  while l[m + 1] ~= nil do m = m + 1 end -- (the sizes too)
+  local own = numbers(m)
+  for k = 1, m do own[k] = l[k] end
+  self._l = own
+  return own
+end
+
 --- Store world-space vertices xs, ys (count n, positive winding, validated) as local
---- geometry about the centroid (cx, cy), with the given unscaled area; the slot SHORT gets the
---- shortest edge (for Shape:_checkNew, which the constructor calls next).
-function VertexShape:_setVertices(xs, ys, n, cx, cy, area)
-  local l = tnew and tnew(4 * n, 0) or {} -- (LuaJIT: no room to spare past 4n)
+--- geometry about the centroid (cx, cy), with the given unscaled area and the class's sizes
+--- (up to 3 numbers, nil for none: see the header); the slot SHORT gets the shortest edge (for
+--- Shape:_checkNew, which the constructor calls next).
+function VertexShape:_setVertices(xs, ys, n, cx, cy, area, size1, size2, size3)
+  local n4 = 4 * n
+  local m = size3 ~= nil and n4 + 3 or size2 ~= nil and n4 + 2 or size1 ~= nil and n4 + 1 or n4
+  local l = spare[m] -- (worked out here, then shared: see `spare`)
+  if not l then l = numbers(m) end
   local r2 = 0
   for i = 1, n do
     local x, y = xs[i] - cx, ys[i] - cy
@@ -140,19 +239,33 @@ function VertexShape:_setVertices(xs, ys, n, cx, cy, area)
       l[k + 2], l[k + 3] = ey / len, -ex / len
     else -- (an edge too short or too long for its square: scaled, still unit; see limits.lua)
       local nx, ny = unit(ey, -ex)
-      l[k + 2], l[k + 3] = nx or 0, ny or -1
+      l[k + 2], l[k + 3] = nx or 0.0, ny or -1.0 -- (floats, as every vertex and normal: see sameGeometry)
     end
     -- the shortest edge, from the coordinates as given (what the constructors check)
-    local m = i < n and i + 1 or 1
-    local e = length(xs[m] - xs[i], ys[m] - ys[i])
+    local o = i < n and i + 1 or 1
+    local e = length(xs[o] - xs[i], ys[o] - ys[i])
     if e < short then short = e end
   end
   local size = layout.size(n)
-  for k = 1, size do self[k] = 0 end
+  if self[1] == nil then -- (zeros already when Shape._slots made it on a VM without table.new)
+    for k = 1, size do self[k] = 0 end
+  end
   for k = #self, size + 1, -1 do self[k] = nil end
-  self[COUNT], self._l = n, l
-  self._seams = false -- (see the header: an own field, read per leaf by the collider queries)
   self[HALF] = symmetricHalf(l, n)
+  if m > n4 then -- (only the sizes given: Lua 5.1 keeps a key set to nil)
+    l[n4 + 1] = size1
+    if m > n4 + 1 then l[n4 + 2] = size2 end
+    if m > n4 + 2 then l[n4 + 3] = size3 end
+  end
+  local g = recentMatch(l, m, n4)
+  if g then
+    if n <= SPARE then spare[m] = l end
+  else
+    g = l
+    spare[m] = nil
+    remember(g)
+  end
+  self[COUNT], self._l = n, g
   self[AREA], self[RADIUS], self[SHORT] = area, sqrt(r2), short
   self[ROUND] = 0
   -- (no refresh yet: see _refresh and _movedBounds)
@@ -209,6 +322,46 @@ function VertexShape:_refresh()
   self[MINX], self[MINY], self[MAXX], self[MAXY] = minx - r, miny - r, maxx + r, maxy + r
   self[R] = r
   self[DIRTY] = false
+end
+
+--- Write the bounds of a shape never refreshed (its slot RX is false) in its bounds slots,
+--- the very numbers _refresh would (the same arithmetic), without its vertex records: they
+--- wait, the shape staying dirty, for the first reader that needs them (the narrow phase, a
+--- ray, a getter), which refreshes it. For S.pace and a collider's bounds, which need only a
+--- box for a body just built and added: most of a level is never tested. (A shape refreshed
+--- before keeps its last bounds for _movedBounds, which reads them with the pose they were
+--- made for: it is refreshed instead; see VertexShape._boundsOnly.)
+function VertexShape:_freshBounds()
+  local n = self[COUNT]
+  local c, s, k = self[COS], self[SIN], self[SCALE]
+  local x0, y0 = self[X], self[Y]
+  local l = self._l
+  local minx, miny, maxx, maxy = huge, huge, -huge, -huge
+  local sc, ss = c * k, s * k
+  for i = 1, n do
+    local q = 4 * i - 3
+    local lx, ly = l[q], l[q + 1]
+    local px, py = x0 + sc * lx - ss * ly, y0 + ss * lx + sc * ly -- (as _refresh)
+    if px < minx then minx = px end
+    if px > maxx then maxx = px end
+    if py < miny then miny = py end
+    if py > maxy then maxy = py end
+  end
+  local r = self[ROUND] * k
+  self[MINX], self[MINY], self[MAXX], self[MAXY] = minx - r, miny - r, maxx + r, maxy + r
+end
+
+--- (internal) Bring a dirty shape's bounds slots up to date: by _freshBounds when it was
+--- never refreshed and its class refreshes as VertexShape does (a class with a _refresh of its
+--- own may bound itself otherwise), else by its _refresh. For the readers that need the bounds
+--- alone (strike/space/Space.lua, colliders/Collider.lua).
+---@param shape strike.Shape a dirty shape
+function VertexShape._boundsOnly(shape)
+  if shape[RX] == false and shape._refresh == VertexShape._refresh then
+    shape:_freshBounds()
+  else
+    shape:_refresh()
+  end
 end
 
 --- The bounds of a dirty shape that has only moved since its last refresh (same angle and

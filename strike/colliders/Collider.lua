@@ -27,6 +27,10 @@
 ---   `_clean` (collider)   bounds and radius (slots),    the same as `_massOK`        refresh (getBbox, getBounds,
 ---                         and CCOUNT too                                             getRadius, calcAreaCentroid)
 ---
+--- A reader that needs a dirty shape's bounds alone (a collider's `refresh`, S.pace) may take
+--- them without its vertex records when it was never refreshed (VertexShape._boundsOnly): the
+--- shape stays dirty, and its first other reader refreshes it, to the same bounds.
+---
 --- Invariant: when a collider's `_massOK` or `_clean` is false, so is that flag on every
 --- enclosing collider. Clearing keeps it by walking up from the change to the root, and a
 --- move (Shape:_touch) may stop at the first collider whose flags are already false
@@ -53,6 +57,7 @@
 local ROOT = (...):match('^(.-)%.colliders%.[^%.]+$')
 local Object = require(ROOT .. '.class')
 local Shape = require(ROOT .. '.base.Shape')
+local boundsOnly = require(ROOT .. '.base.VertexShape')._boundsOnly
 local check = require(ROOT .. '.check')
 local compat = require(ROOT .. '.compat')
 local unpack, tnew = compat.unpack, compat.tableNew
@@ -114,10 +119,8 @@ end
 -- The cache slots and flags, all stale (see the cache protocol above), laid out once, at
 -- construction, so that the object's fields never move.
 local function startCaches(self)
-  if self[1] == nil then -- (a table not made by _alloc, which fills the slots with zeros)
-    for k = 1, CSIZE do
-      if self[k] == nil then self[k] = 0 end
-    end
+  if self[1] == nil then -- (made by LuaJIT's table.new, whose slots are nil, or not by _alloc)
+    for k = 1, CSIZE do self[k] = 0 end
   end
   self._nleaves, self._massOK, self._clean, self._single = -1, false, false, false
 end
@@ -131,12 +134,35 @@ function Collider:new(...)
   self:add(...)
 end
 
+--- (internal) Make `self`, a new collider, the collider of `shape`, which a single-shape
+--- collider's constructor (colliders/single.lua) has just built as an instance of `cls`, a
+--- registered shape class (so a strike shape): what Collider.new(self, shape) does, without
+--- the checks of `add`, which a shape built a moment ago passes. A shape that would fail one
+--- (not an instance of `cls`, its constructor never set its pose, or put it in a collider or
+--- a space), or a collider class with an `add` of its own, takes Collider.new, its checks and
+--- its errors.
+---@param shape strike.Shape
+---@param cls table
+function Collider._newSingle(self, shape, cls)
+  if type(shape) ~= 'table' or getmetatable(shape) ~= cls or rawget(shape, '_pose') == nil
+    or rawget(shape, '_parent') ~= nil or rawget(shape, '_space') ~= nil or rawget(shape, '_sid') ~= nil
+    or self.add ~= Collider.add then
+    return Collider.new(self, shape)
+  end
+  self._shapes = { [0] = self, shape } -- (slot 0: the list's owner, see childrenOf)
+  startCaches(self)
+  shape._parent = self
+end
+
 --- The empty instance `Class(...)` fills (class.lua): a table with room for the slots and
---- for the fields a collider in a space has.
+--- for the fields a collider in a space has (as Shape._slots makes a shape: on the VMs other
+--- than LuaJIT the constructor's nil fields size its hash part, and name the fields Lua 5.1
+--- keeps there; a table that grew would have its slots rounded up to 32).
 ---@return table
 function Collider._alloc()
   if tnew then return tnew(CSIZE, 8) end
-  return { 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 }
+  return { _shapes = nil, _nleaves = nil, _massOK = nil, _clean = nil, _single = nil, _leaves = nil, _space = nil,
+    _sid = nil, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0 }
 end
 
 --- (internal) For strike's own constructors: make `self`, a new instance of Collider or of
@@ -452,7 +478,7 @@ local function refresh(self, depth)
       end
       k = c[CCOUNT] -- (an empty nested collider bounds nothing)
     elseif c[DIRTY] then
-      c:_refresh()
+      boundsOnly(c) -- (the bounds alone, for a leaf never refreshed: its vertices wait)
     end
     if k > 0 then
       local x0, y0, x1, y1 = c[MINX], c[MINY], c[MAXX], c[MAXY]

@@ -3,6 +3,7 @@
 --- in the registry at construction, so re-registering a shape name is followed.
 local ROOT = (...):match('^(.-)%.colliders%.[^%.]+$')
 local Collider = require(ROOT .. '.colliders.Collider')
+local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
 local layout = require(ROOT .. '.base.layout')
 
@@ -19,8 +20,11 @@ return function(shapes, name)
     end
     local ShapeClass = shapes[name]
     if not ShapeClass then check.fail(('strike.trikers.%s: S.hapes.%s is no longer registered'):format(name, name)) end
-    Collider.new(self, ShapeClass(...))
-    self[layout.CANGLE] = self._shapes[1][layout.ANGLE]
+    Shape._forCollider(true) -- (room for the fields of a shape the collider keeps: Shape._slots)
+    local shape = ShapeClass(...)
+    Shape._forCollider(false) -- (in case the class made its instance without Shape._slots)
+    Collider._newSingle(self, shape, ShapeClass)
+    self[layout.CANGLE] = shape[layout.ANGLE]
   end
   return Single
 end

@@ -12,6 +12,8 @@ local limits = require(ROOT .. '.limits')
 local pi = math.pi
 local badSelf, type = check.badSelf, type
 local MIN_LENGTH, MAX_LENGTH = limits.MIN_LENGTH, limits.MAX_LENGTH
+-- A disc's local geometry, for the constructor (its vertices set each time): never kept.
+local disc = { 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, -1.0, 0.0 }
 
 ---@class strike.Capsule : strike.VertexShape
 local Capsule = VertexShape:extend()
@@ -58,8 +60,10 @@ function Capsule:new(x, y, w, h, angle)
   self:_setVertices({ x, x }, { y - half, y + half }, 2, x, y, pi * r * r + 2 * r * len)
   if len == 0 then
     -- a disc: the core's two faces keep the normals a straight part would have (+x, -x)
+    -- (the local geometry is shared, never changed: see VertexShape.lua)
     local l = self._l
-    l[3], l[4], l[7], l[8] = 1.0, 0.0, -1.0, 0.0
+    disc[1], disc[2], disc[5], disc[6] = l[1], l[2], l[5], l[6]
+    self._l = VertexShape._shareGeometry(disc, 2)
   end
   self[HALF] = 1
   self[SHORT] = len > 0 and (len < r and len or r) or r

@@ -1,6 +1,6 @@
 --- A true circle: a point (its position, the centroid) with a radius. Its world data is
 --- the header every shape has (strike/base/layout.lua): bounds, centre and world radius,
---- which the narrow phase reads; its local geometry is the radius `_r`.
+--- which the narrow phase reads; its local geometry is its radius, unscaled (the slot RADIUS).
 local ROOT = (...):match('^(.-)%.shapes%.[^%.]+$')
 local Shape = require(ROOT .. '.base.Shape')
 local check = require(ROOT .. '.check')
@@ -44,16 +44,16 @@ function Circle:new(x, y, r, angle)
     check.fail(('strike.Circle: radius too small: got %s, below %s, the smallest length strike accepts (its square'
       .. ' must stay a normal double)'):format(check.describe(r), check.describe(MIN_LENGTH)))
   end
-  self._r = r + 0.0 -- (a float: r * r must not be integer arithmetic, which wraps on Lua 5.3+)
+  r = r + 0.0 -- (a float: r * r must not be integer arithmetic, which wraps on Lua 5.3+)
   self[AREA] = pi * r * r
-  self[RADIUS], self[SHORT] = self._r, self._r
+  self[RADIUS], self[SHORT] = r, r
   self:_setPose(x, y)
   self:_checkNew('strike.Circle')
   if angle ~= 0 then self:rotate(angle) end
 end
 
 function Circle:_refresh()
-  local r = self._r * self[SCALE]
+  local r = self[RADIUS] * self[SCALE]
   local x, y = self[X], self[Y]
   self[MINX], self[MINY], self[MAXX], self[MAXY] = x - r, y - r, x + r, y + r
   self[R] = r
@@ -64,14 +64,14 @@ end
 ---@return number
 function Circle:getRadius()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getRadius') end
-  return self._r * self[SCALE]
+  return self[RADIUS] * self[SCALE]
 end
 
 --- The rounding radius: a circle is a point rounded by its radius (the same as getRadius).
 ---@return number
 function Circle:getRounding()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getRounding') end
-  return self._r * self[SCALE]
+  return self[RADIUS] * self[SCALE]
 end
 
 --- Minimum and maximum of the projection on the unit vector (nx, ny).
@@ -83,7 +83,7 @@ function Circle:project(nx, ny)
   number(nx, 'strike.Shape:project', 'nx')
   number(ny, 'strike.Shape:project', 'ny')
   local d = self[X] * nx + self[Y] * ny
-  local r = self._r * self[SCALE]
+  local r = self[RADIUS] * self[SCALE]
   return d - r, d + r
 end
 
@@ -94,7 +94,7 @@ end
 function Circle:containsPoint(x, y)
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:containsPoint') end
   x, y = Shape._point(x, y, 'strike.Shape:containsPoint')
-  local dx, dy, r = x - self[X], y - self[Y], self._r * self[SCALE]
+  local dx, dy, r = x - self[X], y - self[Y], self[RADIUS] * self[SCALE]
   return dx * dx + dy * dy < r * r
 end
 
@@ -136,7 +136,7 @@ end
 ---@return number x, number y
 function Circle:getSupport(nx, ny)
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:getSupport') end
-  local r = self._r * self[SCALE]
+  local r = self[RADIUS] * self[SCALE]
   number(nx, 'strike.Shape:getSupport', 'nx')
   number(ny, 'strike.Shape:getSupport', 'ny')
   return self[X] + nx * r, self[Y] + ny * r
@@ -177,7 +177,7 @@ local function circleEdgeIter(state, i)
   if i >= 1 then return nil end
   local self, other = state[1], state[2]
   local ax, ay = axisToward(self, other)
-  local r = self._r * self[SCALE]
+  local r = self[RADIUS] * self[SCALE]
   local px, py = self[X] + ax * r, self[Y] + ay * r
   -- the tangent at the point facing `other`, in positive winding
   return 1, px + ay * r, py - ax * r, px - ay * r, py + ax * r
@@ -214,14 +214,14 @@ end
 ---@return number
 function Circle:_farthest(px, py)
   local dx, dy = self[X] - px, self[Y] - py
-  return sqrt(dx * dx + dy * dy) + self._r * self[SCALE]
+  return sqrt(dx * dx + dy * dy) + self[RADIUS] * self[SCALE]
 end
 
 --- Arguments that rebuild the circle as it is now: x, y, radius, angle.
 ---@return number, number, number, number
 function Circle:unpack()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:unpack') end
-  return self[X], self[Y], self._r * self[SCALE], self[ANGLE]
+  return self[X], self[Y], self[RADIUS] * self[SCALE], self[ANGLE]
 end
 
 return Circle

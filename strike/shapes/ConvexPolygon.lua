@@ -41,6 +41,8 @@ end
 --- kind is 'rounded').
 ---@param ... number|number[]
 function ConvexPolygon:new(...)
+  -- (a subclass's sizes for its local geometry, said just before this call: VertexShape._sizesNext)
+  local size1, size2, size3 = VertexShape._takeSizes()
   if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.ConvexPolygon:new') end
   local fname = self._fname or 'strike.' .. (getmetatable(self).name or 'ConvexPolygon') -- (_fname: see Concave.lua)
   local xs, ys, n = check.coordinates(fname, ...)
@@ -112,7 +114,7 @@ function ConvexPolygon:new(...)
     fail(('%s: coordinates too large or too close together (area %s)'):format(fname, describe(area)))
   end
   if rounding then area, cx, cy = polygon.rounded(hx, hy, h, area, cx, cy, rounding) end
-  self:_setVertices(hx, hy, h, cx, cy, area)
+  self:_setVertices(hx, hy, h, cx, cy, area, size1, size2, size3)
   if rounding then self:_setRounding(rounding) end
   self:_checkNew(fname)
 end
@@ -140,14 +142,18 @@ end
 --- Build from points known to form a strictly convex polygon, distinct, in positive winding
 --- and starting from the first point given (floats, count n, in ConvexPolygon._safeConvex's
 --- range): what ConvexPolygon:new does, without the hull that checks and orders them (on such
---- points the hull returns them as they are). The result is the same to the bit.
+--- points the hull returns them as they are). The result is the same to the bit. `size1` ...
+--- are the class's sizes (VertexShape.lua's header), nil for none.
 ---@param xs number[]
 ---@param ys number[]
 ---@param n integer
 ---@param fname string
-function ConvexPolygon:_fromConvex(xs, ys, n, fname)
+---@param size1 number|nil
+---@param size2 number|nil
+---@param size3 number|nil
+function ConvexPolygon:_fromConvex(xs, ys, n, fname, size1, size2, size3)
   local area, cx, cy = polygon.areaCentroid(xs, ys, n)
-  self:_setVertices(xs, ys, n, cx, cy, area)
+  self:_setVertices(xs, ys, n, cx, cy, area, size1, size2, size3)
   self:_checkNew(fname)
 end
 

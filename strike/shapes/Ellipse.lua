@@ -1,6 +1,7 @@
 --- An ellipse, approximated by an inscribed polygon.
 local ROOT = (...):match('^(.-)%.shapes%.[^%.]+$')
 local ConvexPolygon = require(ROOT .. '.shapes.ConvexPolygon')
+local VertexShape = require(ROOT .. '.base.VertexShape')
 local check = require(ROOT .. '.check')
 local layout = require(ROOT .. '.base.layout')
 local ANGLE, SCALE = layout.ANGLE, layout.SCALE
@@ -39,7 +40,6 @@ function Ellipse:new(x, y, a, b, n, angle)
     check.integer(n, 'strike.Ellipse', 'segment count', 3, 4096)
   end
   angle = check.optNumber(angle, 'strike.Ellipse', 'angle', 0)
-  self._a, self._b, self._n = a, b, n
   local lo, hi = min(a, b), max(a, b)
   -- (edges at least 2 lo sin(pi / n) long, the image of a regular polygon's; and a turn at
   -- every corner far above the hull's tolerance when the semi-axes are within SAFE_RATIO)
@@ -49,13 +49,14 @@ function Ellipse:new(x, y, a, b, n, angle)
       local t = 2 * pi * (k - 1) / n
       xs[k], ys[k] = x + a * cos(t) + 0.0, y + b * sin(t) + 0.0
     end
-    self:_fromConvex(xs, ys, n, 'strike.Ellipse')
+    self:_fromConvex(xs, ys, n, 'strike.Ellipse', a, b, n) -- (its sizes: unpack's)
   else
     local pts = {}
     for k = 1, n do
       local t = 2 * pi * (k - 1) / n
       pts[2 * k - 1], pts[2 * k] = x + a * cos(t), y + b * sin(t)
     end
+    VertexShape._sizesNext(a, b, n) -- (its sizes: unpack's)
     Ellipse.super.new(self, pts)
   end
   self:_placeCentroid(x, y) -- the exact centre
@@ -68,7 +69,8 @@ function Ellipse:unpack()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:unpack') end
   local s = self[SCALE]
   local cx, cy = self:getCentroid()
-  return cx, cy, self._a * s, self._b * s, self._n, self[ANGLE]
+  local a, b, n = self:_sizes()
+  return cx, cy, a * s, b * s, n, self[ANGLE]
 end
 
 return Ellipse

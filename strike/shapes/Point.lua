@@ -19,7 +19,7 @@ function Point:new(x, y)
   if type(self) ~= 'table' or getmetatable(self) == nil then badSelf(self, 'strike.Point:new') end
   check.number(x, 'strike.Point', 'x')
   check.number(y, 'strike.Point', 'y')
-  self._r, self[AREA], self[RADIUS], self[SHORT] = 0, 0, 0, 0
+  self[AREA], self[RADIUS], self[SHORT] = 0, 0, 0
   self:_setPose(x, y)
   self:_checkNew('strike.Point')
 end

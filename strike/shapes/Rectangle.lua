@@ -1,6 +1,7 @@
 --- A rectangle centred on a point, rotatable.
 local ROOT = (...):match('^(.-)%.shapes%.[^%.]+$')
 local ConvexPolygon = require(ROOT .. '.shapes.ConvexPolygon')
+local VertexShape = require(ROOT .. '.base.VertexShape')
 local check = require(ROOT .. '.check')
 local layout = require(ROOT .. '.base.layout')
 local ANGLE, ROUND, SCALE = layout.ANGLE, layout.ROUND, layout.SCALE
@@ -12,6 +13,11 @@ local xs, ys = {}, {} -- (the corners, for the constructor: never kept)
 ---@class strike.Rectangle : strike.ConvexPolygon
 local Rectangle = ConvexPolygon:extend()
 Rectangle.name = 'Rectangle'
+
+--- The empty instance `Rectangle(...)` fills: room for 4 vertices (ConvexPolygon's would
+--- count the arguments as points).
+---@return table
+function Rectangle._alloc() return VertexShape._alloc(4) end
 
 --- A dx-by-dy rectangle (dy defaults to dx) centred on (x, y), turned by `angle` radians.
 --- Unrotated, edge 1 is the min-y side (normal (0, -1)), then +x, max-y and -x.
@@ -41,7 +47,6 @@ function Rectangle:new(x, y, dx, dy, angle, radius)
       .. ' larger'):format(check.describe(dx), check.describe(dy), check.describe(x), check.describe(y),
       ('%.2g'):format(math.max(math.abs(x), math.abs(y)) * 2 ^ -52)))
   end
-  self._w, self._h = dx, dy
   if radius ~= nil then
     ConvexPolygon._checkRounding('strike.Rectangle', radius)
     if not (radius < hx and radius < hy) then
@@ -50,13 +55,15 @@ function Rectangle:new(x, y, dx, dy, angle, radius)
         check.describe(radius)))
     end
     local cx, cy = hx - radius, hy - radius
+    VertexShape._sizesNext(dx, dy) -- (its width and height: unpack's)
     Rectangle.super.new(self, { x - cx, y - cy, x + cx, y - cy, x + cx, y + cy, x - cx, y + cy, radius = radius })
   elseif safeConvex(x, y, 4, hx < hy and dx or dy, hx + hy) then
     -- (four corners in positive winding: the hull would return them as they are)
     xs[1], xs[2], xs[3], xs[4] = x - hx + 0.0, x + hx + 0.0, x + hx + 0.0, x - hx + 0.0
     ys[1], ys[2], ys[3], ys[4] = y - hy + 0.0, y - hy + 0.0, y + hy + 0.0, y + hy + 0.0
-    self:_fromConvex(xs, ys, 4, 'strike.Rectangle')
+    self:_fromConvex(xs, ys, 4, 'strike.Rectangle', dx, dy)
   else
+    VertexShape._sizesNext(dx, dy)
     Rectangle.super.new(self, x - hx, y - hy, x + hx, y - hy, x + hx, y + hy, x - hx, y + hy)
   end
   self:_placeCentroid(x, y) -- the exact centre, free of round-off
@@ -70,8 +77,9 @@ function Rectangle:unpack()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:unpack') end
   local s = self[SCALE]
   local x, y = self:getCentroid()
-  if self[ROUND] > 0 then return x, y, self._w * s, self._h * s, self[ANGLE], self[ROUND] * s end
-  return x, y, self._w * s, self._h * s, self[ANGLE]
+  local w, h = self:_sizes()
+  if self[ROUND] > 0 then return x, y, w * s, h * s, self[ANGLE], self[ROUND] * s end
+  return x, y, w * s, h * s, self[ANGLE]
 end
 
 return Rectangle

@@ -1,6 +1,7 @@
 --- A regular polygon inscribed in a circle.
 local ROOT = (...):match('^(.-)%.shapes%.[^%.]+$')
 local ConvexPolygon = require(ROOT .. '.shapes.ConvexPolygon')
+local VertexShape = require(ROOT .. '.base.VertexShape')
 local check = require(ROOT .. '.check')
 local layout = require(ROOT .. '.base.layout')
 local ANGLE, SCALE = layout.ANGLE, layout.SCALE
@@ -8,6 +9,23 @@ local badSelf, type = check.badSelf, type
 
 local sin, cos, pi = math.sin, math.cos, math.pi
 local xs, ys = {}, {} -- (the vertices, for the constructor: never kept)
+
+-- The directions of an n-gon's vertices, sin and cos of a = -2 pi i / n for i = 1..n (flat:
+-- sin at 2i - 1, cos at 2i), by n: the very numbers the constructor's formula gives, worked
+-- out once for each n its fast path meets (n <= 64: ConvexPolygon._safeConvex).
+local directions = {}
+local function directionsOf(n)
+  local d = directions[n]
+  if not d then
+    d = {}
+    for i = 1, n do
+      local a = -2 * pi * i / n
+      d[2 * i - 1], d[2 * i] = sin(a), cos(a)
+    end
+    directions[n] = d
+  end
+  return d
+end
 
 ---@class strike.RegularPolygon : strike.ConvexPolygon
 local RegularPolygon = ConvexPolygon:extend()
@@ -18,7 +36,7 @@ RegularPolygon.name = 'RegularPolygon'
 ---@param _ any
 ---@param n any
 ---@return table
-function RegularPolygon._alloc(_, _, n) return ConvexPolygon.super._alloc(n) end
+function RegularPolygon._alloc(_, _, n) return VertexShape._alloc(n) end
 
 --- An n-sided regular polygon (3 <= n <= 4096) centred on (x, y) with circumradius
 --- `radius`, turned by `angle`. Unrotated, vertex n sits at (x, y + radius), as in the
@@ -35,21 +53,19 @@ function RegularPolygon:new(x, y, n, radius, angle)
   check.integer(n, 'strike.RegularPolygon', 'side count', 3, 4096)
   check.positive(radius, 'strike.RegularPolygon', 'radius')
   angle = check.optNumber(angle, 'strike.RegularPolygon', 'angle', 0)
-  self._n, self._radius = n, radius
   -- (edges 2 radius sin(pi / n) long, at least 0.098 radius for n <= 64)
   if ConvexPolygon._safeConvex(x, y, n, 0.098 * radius, radius) then
     -- (in positive winding from vertex 1: the hull would return them as they are)
-    for i = 1, n do
-      local a = -2 * pi * i / n
-      xs[i], ys[i] = x + radius * sin(a) + 0.0, y + radius * cos(a) + 0.0
-    end
-    self:_fromConvex(xs, ys, n, 'strike.RegularPolygon')
+    local d = directionsOf(n)
+    for i = 1, n do xs[i], ys[i] = x + radius * d[2 * i - 1] + 0.0, y + radius * d[2 * i] + 0.0 end
+    self:_fromConvex(xs, ys, n, 'strike.RegularPolygon', n, radius) -- (its sizes: unpack's)
   else
     local pts = {}
     for i = 1, n do
       local a = -2 * pi * i / n
       pts[2 * i - 1], pts[2 * i] = x + radius * sin(a), y + radius * cos(a)
     end
+    VertexShape._sizesNext(n, radius)
     RegularPolygon.super.new(self, pts)
   end
   self:_placeCentroid(x, y) -- the exact centre
@@ -61,7 +77,8 @@ end
 function RegularPolygon:unpack()
   if type(self) ~= 'table' or self._pose == nil then badSelf(self, 'strike.Shape:unpack') end
   local cx, cy = self:getCentroid()
-  return cx, cy, self._n, self._radius * self[SCALE], self[ANGLE]
+  local n, radius = self:_sizes()
+  return cx, cy, n, radius * self[SCALE], self[ANGLE]
 end
 
 return RegularPolygon

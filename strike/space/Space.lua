@@ -30,6 +30,7 @@ local ray = require(ROOT .. '.collide.ray')
 local Collider = require(ROOT .. '.colliders.Collider')
 local reserved = require(ROOT .. '.reserved')
 local spaces = require(ROOT .. '.base.Shape')._spaces
+local boundsOnly = require(ROOT .. '.base.VertexShape')._boundsOnly
 
 local collide = compound.collide
 local fail, describe, what, badSelf = check.fail, check.describe, check.what, check.badSelf
@@ -278,10 +279,11 @@ local function flush(self)
         local x0, y0, x1, y1
         if b[DIRTY] then
           -- (a polygon that only moved: its last bounds, moved; its vertices wait for the
-          -- narrow phase, which refreshes only the shapes in a pair whose boxes meet)
+          -- narrow phase, which refreshes only the shapes in a pair whose boxes meet; and so
+          -- do those of a polygon never refreshed: boundsOnly)
           local movedBounds = b._movedBounds
           if movedBounds then x0, y0, x1, y1 = movedBounds(b) end
-          if not x0 then b:_refresh() end
+          if not x0 then boundsOnly(b) end
         end
         if x0 then place(tree, id, x0, y0, x1, y1) else place(tree, id, b[MINX], b[MINY], b[MAXX], b[MAXY]) end
       else
@@ -364,7 +366,13 @@ function Space:add(body, opts)
   if other == self then fail('strike.Space:add: argument 1 is already in this space') end
   if other then fail('strike.Space:add: argument 1 is in another space; remove it from that one first') end
   local layer, mask, group, sensor = options('strike.Space:add', opts)
-  local id = self._tree:insert(body:getBounds())
+  local id
+  if body._pose and body[DIRTY] then -- (a shape: its bounds alone, as flush takes them)
+    boundsOnly(body)
+    id = self._tree:insert(body[MINX], body[MINY], body[MAXX], body[MAXY])
+  else
+    id = self._tree:insert(body:getBounds()) -- (a collider's bounds take its leaves' alone too)
+  end
   self._version = self._version + 1
   if self._nextRank >= K - 1 then renumber(self) end
   local r = self._nextRank + 1
@@ -1150,6 +1158,7 @@ local function queryRectOf(self, x, y, w, h, filterArg, out)
   local probe = level.probe
   if not probe then
     probe = Rectangle(0, 0, 1, 1)
+    probe:_ownGeometry() -- (changed in place below: a table no game's 1 by 1 rectangle shares)
     level.probe = probe
   end
   -- (the probe's local geometry set in place: corners at (+-w/2, +-h/2), as the
@@ -1157,7 +1166,8 @@ local function queryRectOf(self, x, y, w, h, filterArg, out)
   local hw, hh = w / 2, h / 2
   local l = probe._l
   l[1], l[2], l[5], l[6], l[9], l[10], l[13], l[14] = -hw, -hh, hw, -hh, hw, hh, -hw, hh
-  probe.dx, probe.dy, probe[AREA], probe[RADIUS] = w, h, w * h, sqrt(hw * hw + hh * hh)
+  -- (and its sizes, width and height, after its 4 vertices' 16 numbers: VertexShape.lua)
+  l[17], l[18], probe[AREA], probe[RADIUS] = w, h, w * h, sqrt(hw * hw + hh * hh)
   probe[X], probe[Y] = x + hw, y + hh
   probe:_touch()
   return overlapping(self, level, probe, filterArg, out)
