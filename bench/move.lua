@@ -393,7 +393,8 @@ if opts.save then
   local f = assert(io.open(path, 'w'))
   f:write('vm,section,library,n,metric,value\n')
   for _, r in ipairs(csv) do
-    f:write(('%s,%s,%s,%d,%s,%.6g\n'):format(vmName .. (jit and (' ' .. JIT_LIMITS) or ''), 'move', r[1], N, r[2], r[3]))
+    f:write(('%s,%s,%s,%d,%s,%.6g\n'):format(vmName .. (jit and (' ' .. JIT_LIMITS) or ''), 'move', r[1], N, r[2],
+      r[3]))
   end
   f:close()
   print('saved ' .. path)

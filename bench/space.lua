@@ -848,7 +848,8 @@ if opts.save then
   local f = assert(io.open(path, 'w'))
   f:write('vm,section,library,n,metric,value\n')
   for _, r in ipairs(csv) do
-    f:write(('%s,%s,%s,%d,%s,%.6g\n'):format(vmName .. (jit and (' ' .. JIT_LIMITS) or ''), r[1], r[2], r[3], r[4], r[5]))
+    f:write(('%s,%s,%s,%d,%s,%.6g\n'):format(vmName .. (jit and (' ' .. JIT_LIMITS) or ''), r[1], r[2], r[3], r[4],
+      r[5]))
   end
   f:close()
   print('saved ' .. path)
