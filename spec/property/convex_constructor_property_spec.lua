@@ -92,7 +92,7 @@ describe('Rectangle, RegularPolygon and Ellipse without the hull', function()
       local n = rng:next() < 0.3 and rng:int(3, 80) or nil
       local ok, e = pcall(H.Ellipse, x, y, a, b, n)
       if ok then
-        local segs = e._n
+        local segs = select(5, e:unpack())
         local lo, hi = math.min(a, b), math.max(a, b)
         if hi <= 16 * lo and S.hapes.ConvexPolygon._safeConvex(x, y, segs, 2 * lo * sin(pi / segs), hi) then
           fast = fast + 1
