@@ -638,6 +638,10 @@ function M.docs(source)
   return list
 end
 
+--- A file's whole contents, or nil and the error (tools/apidoc.lua reads with it too).
+---@param path string
+---@return string|nil
+---@return string|nil err
 local function readFile(path)
   local f, err = io.open(path, 'rb')
   if not f then return nil, err end
@@ -645,6 +649,7 @@ local function readFile(path)
   f:close()
   return s
 end
+M.readFile = readFile
 
 local function writeFile(path, s)
   local f, err = io.open(path, 'wb')

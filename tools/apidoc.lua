@@ -305,13 +305,7 @@ function M.render(files, read)
   return table.concat(out, '\n') .. '\n'
 end
 
-local function readFile(path)
-  local f, err = io.open(path, 'rb')
-  if not f then return nil, err end
-  local s = f:read('*a')
-  f:close()
-  return s
-end
+local readFile = A.readFile
 
 --- The command line (see the header). Returns the exit status.
 ---@param argv string[]
