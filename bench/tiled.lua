@@ -49,32 +49,12 @@ if opts.jit ~= 'love' and opts.jit ~= 'stock' then error('--jit must be love or 
 local vmName = jit and jit.version or _VERSION
 local vmFile = jit and 'luajit' or _VERSION:gsub('Lua ', 'lua')
 
--- The regions of the solid cells, by a flood fill over 4-neighbours (no code of strike's).
+-- The regions of the solid cells, by a flood fill over 4-neighbours (no code of strike's: the
+-- specs' own, spec/helpers/tiled.lua, over the cells as solid or not).
 local function floodRegions(data, n)
-  local seen, regions = {}, 0
-  local stack = {}
-  for start = 1, n * n do
-    if data[start] ~= 0 and not seen[start] then
-      regions = regions + 1
-      seen[start] = true
-      local top = 1
-      stack[1] = start
-      while top > 0 do
-        local i = stack[top]
-        top = top - 1
-        local c, r = (i - 1) % n, math.floor((i - 1) / n)
-        local nb = { c > 0 and i - 1, c < n - 1 and i + 1, r > 0 and i - n, r < n - 1 and i + n }
-        for k = 1, 4 do
-          local j = nb[k]
-          if j and data[j] ~= 0 and not seen[j] then
-            seen[j] = true
-            top = top + 1
-            stack[top] = j
-          end
-        end
-      end
-    end
-  end
+  local solid = {}
+  for i = 1, n * n do solid[i] = data[i] ~= 0 and 1 or 0 end
+  local _, regions = require('spec.helpers.tiled').regions(solid, n, n)
   return regions
 end
 
