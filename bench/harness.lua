@@ -55,4 +55,35 @@ function H.tableOut(head, rows)
   print()
 end
 
+--- Load the peers found in $STRIKE_PEERS: for each { folder, name, adapter module } of `list`
+--- that `wanted(name)` allows, the adapter, loaded from the checkout of that folder (a folder
+--- with a README.md), is appended to `libs`; one missing or failing is noted in `skipped`, and
+--- without STRIKE_PEERS, `hint` is.
+---@param list table[]
+---@param wanted fun(name: string): boolean
+---@param libs table
+---@param skipped string[]
+---@param hint string
+function H.peers(list, wanted, libs, skipped, hint)
+  local peerDir = os.getenv('STRIKE_PEERS')
+  if not peerDir or peerDir == '' then
+    skipped[#skipped + 1] = hint
+    return
+  end
+  for _, p in ipairs(list) do
+    if wanted(p[2]) then
+      local f = io.open(peerDir .. '/' .. p[1] .. '/README.md', 'r')
+      if f then
+        f:close()
+        local okReq, adapter = pcall(require, p[3])
+        local ok, err = false, adapter
+        if okReq then ok, err = adapter.load(peerDir, p[1]) end
+        if ok then libs[#libs + 1] = adapter else skipped[#skipped + 1] = p[2] .. ' (' .. tostring(err) .. ')' end
+      else
+        skipped[#skipped + 1] = p[2] .. ' (no ' .. peerDir .. '/' .. p[1] .. ')'
+      end
+    end
+  end
+end
+
 return H

@@ -120,26 +120,9 @@ do
     if wanted('strike-shapes') then libs[#libs + 1] = A.shapes end
   end
 end
-local peerDir = os.getenv('STRIKE_PEERS')
-if peerDir and peerDir ~= '' then
-  for _, p in ipairs({ { 'bump.lua', 'bump', 'bench.adapters.move_bump' },
-    { 'slick', 'slick', 'bench.adapters.move_slick' } }) do
-    if wanted(p[2]) then
-      local f = io.open(peerDir .. '/' .. p[1] .. '/README.md', 'r')
-      if f then
-        f:close()
-        local okReq, adapter = pcall(require, p[3])
-        local ok, err = false, adapter
-        if okReq then ok, err = adapter.load(peerDir, p[1]) end
-        if ok then libs[#libs + 1] = adapter else skipped[#skipped + 1] = p[2] .. ' (' .. tostring(err) .. ')' end
-      else
-        skipped[#skipped + 1] = p[2] .. ' (no ' .. peerDir .. '/' .. p[1] .. ')'
-      end
-    end
-  end
-else
-  skipped[#skipped + 1] = 'bump, slick (set STRIKE_PEERS to a folder with bump.lua and slick checkouts)'
-end
+H.peers({ { 'bump.lua', 'bump', 'bench.adapters.move_bump' },
+  { 'slick', 'slick', 'bench.adapters.move_slick' } }, wanted, libs, skipped,
+  'bump, slick (set STRIKE_PEERS to a folder with bump.lua and slick checkouts)')
 
 ---------------------------------------------------------------------------------------------
 -- The workload.

@@ -94,25 +94,9 @@ if wanted('strike') then
   local ok, A = pcall(require, 'bench.adapters.movers_strike')
   if ok then libs[#libs + 1] = A else skipped[#skipped + 1] = 'strike (' .. tostring(A) .. ')' end
 end
-local peerDir = os.getenv('STRIKE_PEERS')
-if peerDir and peerDir ~= '' then
-  for _, p in ipairs({ { 'bump.lua', 'bump' }, { 'slick', 'slick' } }) do
-    if wanted(p[2]) then
-      local f = io.open(peerDir .. '/' .. p[1] .. '/README.md', 'r')
-      if f then
-        f:close()
-        local okReq, adapter = pcall(require, 'bench.adapters.movers_' .. p[2])
-        local ok, err = false, adapter
-        if okReq then ok, err = adapter.load(peerDir, p[1]) end
-        if ok then libs[#libs + 1] = adapter else skipped[#skipped + 1] = p[2] .. ' (' .. tostring(err) .. ')' end
-      else
-        skipped[#skipped + 1] = p[2] .. ' (no ' .. peerDir .. '/' .. p[1] .. ')'
-      end
-    end
-  end
-else
-  skipped[#skipped + 1] = 'bump, slick (set STRIKE_PEERS to a folder with bump.lua and slick checkouts)'
-end
+H.peers({ { 'bump.lua', 'bump', 'bench.adapters.movers_bump' },
+  { 'slick', 'slick', 'bench.adapters.movers_slick' } }, wanted, libs, skipped,
+  'bump, slick (set STRIKE_PEERS to a folder with bump.lua and slick checkouts)')
 
 ---------------------------------------------------------------------------------------------
 -- The world.

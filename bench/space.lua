@@ -114,26 +114,9 @@ do
     if wanted('strike-shapes') then libs[#libs + 1] = A.shapes end
   end
 end
-local peerDir = os.getenv('STRIKE_PEERS')
-if peerDir and peerDir ~= '' then
-  for _, p in ipairs({ { 'bump.lua', 'bump', 'bench.adapters.space_bump' },
-    { 'HC', 'HC', 'bench.adapters.space_hc' } }) do
-    if wanted(p[2]) then
-      local f = io.open(peerDir .. '/' .. p[1] .. '/README.md', 'r')
-      if f then
-        f:close()
-        local okReq, adapter = pcall(require, p[3])
-        local ok, err = false, adapter
-        if okReq then ok, err = adapter.load(peerDir, p[1]) end
-        if ok then libs[#libs + 1] = adapter else skipped[#skipped + 1] = p[2] .. ' (' .. tostring(err) .. ')' end
-      else
-        skipped[#skipped + 1] = p[2] .. ' (no ' .. peerDir .. '/' .. p[1] .. ')'
-      end
-    end
-  end
-else
-  skipped[#skipped + 1] = 'HC, bump (set STRIKE_PEERS to a folder with HC and bump.lua checkouts)'
-end
+H.peers({ { 'bump.lua', 'bump', 'bench.adapters.space_bump' },
+  { 'HC', 'HC', 'bench.adapters.space_hc' } }, wanted, libs, skipped,
+  'HC, bump (set STRIKE_PEERS to a folder with HC and bump.lua checkouts)')
 local function findLib(name)
   for _, l in ipairs(libs) do if l.name == name then return l end end
 end
