@@ -337,6 +337,27 @@ describe('bench.broadphase.tree', function()
     assert.are.equal(3, t:rebuilds())
   end)
 
+  it('lets go of the lists a bulk build filled (as long as the level), and keeps them otherwise', function()
+    -- (stale: the proxies awaiting flush; moved: the move buffer, until pairs)
+    local t, out = Tree.new(), {}
+    for i = 1, 300 do t:insert(i * 10, 0, i * 10 + 4, 4) end
+    assert.are.equal(300, #t.stale)
+    t:query(0, 0, 1, 1, out)
+    assert.are.equal(1, t:rebuilds())
+    assert.are.equal(0, #t.stale) -- (a new, empty list)
+    assert.are.equal(300, #t.moved) -- (pairs needs it still)
+    assert.are.equal(0, t:pairs(out))
+    assert.are.equal(0, #t.moved)
+    -- a flush and pairs without a bulk build keep their lists (no garbage frame after frame)
+    local stale, moved = t.stale, t.moved
+    for i = 1, 300 do t:update(i, i * 10, 50, i * 10 + 4, 54) end
+    assert.are.equal(0, t:pairs(out))
+    assert.are.equal(1, t:rebuilds())
+    assert.are.equal(stale, t.stale)
+    assert.are.equal(moved, t.moved)
+    assert.are.equal(300, #t.stale) -- (its entries stay until overwritten)
+  end)
+
   it('matches brute force on a dense world (most boxes overlap)', function()
     run(SEED + 10, 0, 0, 60, 15)
   end)
