@@ -188,7 +188,8 @@ end
 --- Run the LÖVE program bench/lovephysics with `args` (from the repository root); its
 --- `box2d <kind> key=value ...` lines as records { kind =, key = value ... } (numbers
 --- converted; a `box2d rayhit <ray> <body> <distance>` line as { kind = 'rayhit', ray =,
---- body =, d = }), or nil and the reason. When LÖVE does not start (no `box2d version` line),
+--- body =, d = }; the `box2d version ...` line's text in the list's field `version`), or nil
+--- and the reason. When LÖVE does not start (no `box2d version` line),
 --- tries once more under xvfb-run.
 ---@param args string
 ---@return table[]|nil records
@@ -207,6 +208,7 @@ function H.runLove(args)
         err = 'LÖVE program: ' .. rest
       elseif kind == 'version' then
         started = true
+        recs.version = rest
       elseif kind then
         local r = { kind = kind }
         for key, v in rest:gmatch('([%w_]+)=(%S+)') do r[key] = tonumber(v) or v end
