@@ -89,6 +89,7 @@ for _, w in ipairs(workloads) do
     local rLo, rHi = at.rate / hi.rate, at.rate / lo.rate
     cells[7] = ratio(rLo) .. '–' .. ratio(rHi)
     cells[8] = rLo >= 0.5 and 'met' or rHi < 0.5 and 'not met' or 'undecided'
+    if opts.pairs ~= 10000 then cells[8] = '(' .. cells[8] .. ': the target is at 10,000 pairs)' end
   else
     failed[#failed + 1] = w .. ': results missing'
   end
