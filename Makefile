@@ -2,7 +2,7 @@
 # check, the LÖVE screenshot checks and the busted suite under every Lua VM.
 VMS ?= lua5.1 lua5.2 lua5.3 lua5.4 luajit
 
-.PHONY: test deps lint annotations annotations-fix api spec copy-check rockspec-check love-check bench bench-space bench-move bench-movers demo
+.PHONY: test deps lint annotations annotations-fix api spec copy-check rockspec-check love-check bench bench-space bench-move bench-movers bench-narrow demo
 
 test: deps lint annotations copy-check rockspec-check love-check spec
 
@@ -56,7 +56,8 @@ rockspec-check:
 # bench/tiled.lua (S.tiled's first load in fresh processes) and bench/space.lua (the world
 # beside the peers) under each of BENCH_VMS (bench/bench.sh), tables printed and saved to
 # bench/results/<vm>.csv, move-, movers-, tiled- and space-<vm>.csv (LuaJIT: also the
-# -luajit-stock.csv of the runs under the standalone limits). STRIKE_PEERS=/path/to/peers adds
+# -luajit-stock.csv of the runs under the standalone limits); then, once, when love is on the
+# PATH, bench/narrow.lua (bench/results/narrow-love.csv). STRIKE_PEERS=/path/to/peers adds
 # the peers found there.
 BENCH_VMS ?= luajit lua5.4
 
@@ -73,6 +74,15 @@ bench-space:
 	@status=0; for vm in $(BENCH_VMS); do \
 	  echo "== bench/space.lua under $$vm"; $$vm bench/space.lua --save $(SPACE_ARGS) || status=1; echo; \
 	done; exit $$status
+
+# bench/narrow.lua: the narrow phase at 10,000 pairs (poly-poly, circle-poly), strike's S.AT and
+# S.triking beside Box2D's contact update, both timed inside LÖVE (love on the PATH; the VM
+# here only reads LÖVE's lines), with issue 21's target 5 (strike at half Box2D's rate or more);
+# the tables printed and saved to bench/results/narrow-love.csv. NARROW_ARGS="--pairs 2000".
+NARROW_ARGS ?=
+
+bench-narrow:
+	@$(firstword $(BENCH_VMS)) bench/narrow.lua --save $(NARROW_ARGS)
 
 # bench/move.lua under each of BENCH_VMS in turn: S.pace's move of one 16x16 box through 1,000
 # static boxes beside bump's and slick's world:move (STRIKE_PEERS): µs per move, collisions per

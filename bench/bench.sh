@@ -12,7 +12,9 @@
 # `bench/tiled.lua --save` (S.tiled loading a 200 x 200 map, 40 % solid, with 1,000 objects,
 # its first load in fresh processes), then `bench/space.lua --save` (the world: frames, rays,
 # build, churn and memory beside HC, bump and Box2D through LÖVE), under each VM in turn (never
-# in parallel, so that runs do not share the CPUs). On LuaJIT the move, the movers, the Tiled
+# in parallel, so that runs do not share the CPUs); then, once, when love is on the PATH,
+# `bench/narrow.lua --save` (the narrow phase at 10,000 pairs, strike beside Box2D, both timed
+# inside LÖVE; bench/results/narrow-love.csv). On LuaJIT the move, the movers, the Tiled
 # load and the world's frames and rays run a second time with the standalone interpreter's JIT
 # limits (--jit stock), their tables counting the trace flushes. Prints each VM's tables and
 # writes bench/results/<vm>.csv, move-, movers-, tiled- and space-<vm>.csv (-luajit-stock.csv
@@ -56,5 +58,23 @@ for vm in ${BENCH_VMS:-luajit lua5.4}; do
   fi
   echo
 done
+# The narrow phase beside Box2D (issue 21's target 5): once, not per VM, since it is timed in
+# LÖVE under LÖVE's LuaJIT; bench/narrow.lua itself runs under the first VM found.
+if command -v love >/dev/null 2>&1; then
+  lua=""
+  for vm in ${BENCH_VMS:-luajit lua5.4}; do
+    if command -v "$vm" >/dev/null 2>&1; then lua=$vm; break; fi
+  done
+  echo "== the narrow phase beside Box2D, inside LÖVE"
+  t0=$(date +%s)
+  if [ -n "$lua" ] && "$lua" bench/narrow.lua --save; then
+    echo "== narrow phase: $(( $(date +%s) - t0 )) s"
+  else
+    echo "== narrow phase: FAILED" >&2; status=1
+  fi
+  echo
+else
+  echo "== the narrow phase beside Box2D: skipped (no love on the PATH)"
+fi
 echo "== VMs run: ${ran[*]:-none}; $(( $(date +%s) - start )) s in all"
 exit $status

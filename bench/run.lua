@@ -33,9 +33,9 @@
 package.path = './?.lua;./?/init.lua;' .. package.path
 
 local W = require('bench.workloads')
+local H = require('bench.harness')
 
 local clock = os.clock
-local load = loadstring or load -- luacheck: ignore 113
 local jit = rawget(_G, 'jit')
 
 local opts = { pairs = 10000, seed = 42, save = false, full = false }
@@ -74,70 +74,7 @@ if peerDir and peerDir ~= '' then
   end
 end
 
--- A fresh copy of the timing loop per row, so that LuaJIT traces one loop per method.
-local RUNNER = [[
-local test, A, B, n, reps = ...
-for _ = 1, reps do
-  for i = 1, n do test(A[i], B[i]) end
-end
-]]
-
--- Seconds per timed run, and timed runs per row (the best counts: on a shared virtual
--- machine the slow runs are other tenants' doing). A row costs a warm-up, one calibrating
--- run and RUNS timed runs.
-local TARGET, RUNS = 0.1, 5
--- Slow rows are timed on a prefix of their pairs (all of them are still checked): at
--- least this many (an even count, so that hits and misses stay balanced).
-local MIN_TIMED = 500
-
--- Calls per second (best of RUNS runs of about TARGET seconds), KB allocated per call, and how
--- many pairs were timed.
-local function timeRow(test, A, B, n)
-  local run = load(RUNNER)
-  local w = math.min(n, MIN_TIMED)
-  local t0 = clock()
-  run(test, A, B, w, 1) -- warm-up, and a first guess at the speed
-  local per = math.max(clock() - t0, 1e-6) / w
-  local m = n
-  if per * n > 3 * TARGET then m = math.min(n, math.max(MIN_TIMED, 2 * math.floor(TARGET / per / 2))) end
-  local reps = math.max(1, math.floor(TARGET / (per * m) + 0.5))
-  local best, runs = math.huge, -1 -- the first run only calibrates
-  while runs < RUNS do
-    t0 = clock()
-    run(test, A, B, m, reps)
-    local t = clock() - t0
-    if t < TARGET / 2 then
-      reps = math.max(reps + 1, math.floor(reps * TARGET / math.max(t, 1e-6) + 0.5))
-    else
-      if runs >= 0 and t < best then best = t end
-      runs = runs + 1
-    end
-  end
-  -- Allocation: the second of two passes with the GC stopped (a full collection shrinks
-  -- the stack on some VMs, and the first pass grows it again).
-  collectgarbage('collect')
-  collectgarbage('stop')
-  run(test, A, B, m, 1)
-  local before = collectgarbage('count')
-  run(test, A, B, m, 1)
-  local kb = (collectgarbage('count') - before) / m
-  collectgarbage('restart')
-  return m * reps / best, kb, m
-end
-
--- Check a method's verdicts (and, for strike, depths) against the oracle on pairs i..j.
-local function verify(lib, method, pairsList, A, B, i, j)
-  local wrongVerdict, wrongDepth = 0, 0
-  for k = i, j do
-    local hit, len = method.test(A[k], B[k])
-    if hit ~= pairsList[k].hit then wrongVerdict = wrongVerdict + 1 end
-    if lib.name == 'strike' and hit and pairsList[k].depth then
-      local want = pairsList[k].depth
-      if math.abs(len - want) > 1e-9 * math.max(1, want) then wrongDepth = wrongDepth + 1 end
-    end
-  end
-  return wrongVerdict, wrongDepth
-end
+local timeRow, verify, MIN_TIMED = H.timeRow, H.verify, H.MIN_TIMED
 
 local rows = {}
 local function record(workload, lib, method, rate, kb, wrongV, wrongD, timed, checked, total)
@@ -179,7 +116,7 @@ local function runMethod(workload, lib, method, list)
     if method.pair then
       for k = i, j do A[k], B[k] = method.pair(A[k], B[k]) end
     end
-    local v, d = verify(lib, method, list, A, B, i, j)
+    local v, d = verify(lib.name == 'strike', method, list, A, B, i, j)
     wrongV, wrongD = wrongV + v, wrongD + d
     return true
   end

@@ -124,55 +124,9 @@ end
 -- Box2D through LÖVE: `love` on the PATH (run without a display first, then under xvfb-run).
 local love
 if wanted('box2d') then
-  local p = io.popen('command -v love 2>/dev/null')
-  local path = p and p:read('*l')
-  if p then p:close() end
-  if path and path ~= '' then love = true else skipped[#skipped + 1] = 'box2d (no love on the PATH)' end
+  if H.loveOnPath() then love = true else skipped[#skipped + 1] = 'box2d (no love on the PATH)' end
 end
-
--- Runs the LÖVE program for one section; its `box2d ...` lines as records
--- { kind =, key = value ... } (numbers converted), or nil and the reason. When LÖVE does
--- not start (no `box2d version` line), tries once more under xvfb-run.
-local function runLove(args)
-  local function try(prefix)
-    local p = io.popen(prefix .. 'love bench/lovephysics ' .. args .. ' 2>&1')
-    if not p then return nil, 'io.popen failed', false end
-    local recs, other, err, started = {}, {}, nil, false
-    for line in p:lines() do
-      local kind, rest = line:match('^box2d (%S+)%s*(.*)$')
-      if kind == 'rayhit' then
-        local k, i, d = rest:match('^(%d+) (%d+) (%S+)$')
-        recs[#recs + 1] = { kind = kind, ray = tonumber(k), body = tonumber(i), d = tonumber(d) }
-      elseif kind == 'error' then
-        err = 'LÖVE program: ' .. rest
-      elseif kind == 'version' then
-        started = true
-      elseif kind then
-        local r = { kind = kind }
-        for key, v in rest:gmatch('(%w+)=(%S+)') do r[key] = tonumber(v) or v end
-        recs[#recs + 1] = r
-      else
-        other[#other + 1] = line
-      end
-    end
-    p:close()
-    if err then return nil, err, started end
-    if #recs == 0 then return nil, table.concat(other, ' / '), started end
-    return recs, nil, started
-  end
-  local recs, err, started = try('')
-  if not started then
-    local p = io.popen('command -v xvfb-run 2>/dev/null')
-    local xvfb = p and p:read('*l')
-    if p then p:close() end
-    if xvfb and xvfb ~= '' then
-      local recs2, err2 = try('xvfb-run -a ')
-      if recs2 then return recs2 end
-      err = err .. ' / under xvfb-run: ' .. tostring(err2)
-    end
-  end
-  return recs, err
-end
+local runLove = H.runLove
 
 -- LuaJIT trace events during timed frames.
 local flushes, aborts, traces, counting = 0, 0, 0, false

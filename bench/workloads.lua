@@ -249,6 +249,55 @@ function W.generate(name, count, seed)
   error('no workload ' .. name)
 end
 
+--- Where to put a workload's pairs in one world (bench/lovephysics's narrow section, where
+--- Box2D finds them with its broadphase): pair k on cell k of a square grid centred on the
+--- origin, its first body at the cell's centre. `apart` false: the second body where the
+--- workload has it relative to the first (the pair's overlap as it is); true: the second body
+--- half a cell to the right of the first, clear of it. The cell's side is the least for which
+--- the bodies of different pairs, and in `apart` the two of a pair, stay `gap` apart or more,
+--- each body taken as the disc around its centre that holds it (circumradius): 2 (D + R) +
+--- gap, and 2 (2 R + gap) for `apart`, whichever is larger (both layouts use the same), where
+--- R is the largest circumradius and D the largest distance between a pair's two centres.
+--- Single shapes only ('rect', 'ngon', 'circle', 'edge').
+---@param list table[] pairs { descA, descB }
+---@param apart boolean
+---@param gap number
+---@return number[] ax x of each pair's first body
+---@return number[] ay
+---@return number[] bx x of each pair's second body
+---@return number[] by
+---@return number side the cell's side
+function W.layout(list, apart, gap)
+  local n, R, D = #list, 0, 0
+  local ca, cb = {}, {}
+  for k = 1, n do
+    local a, b = list[k][1], list[k][2]
+    if a.kind == 'compound' or b.kind == 'compound' then error('W.layout: single shapes only', 2) end
+    discs(a, ca, 0)
+    discs(b, cb, 0)
+    local dx, dy = cb[1] - ca[1], cb[2] - ca[2]
+    R = math.max(R, ca[3], cb[3])
+    D = math.max(D, math.sqrt(dx * dx + dy * dy))
+  end
+  local side = math.max(2 * (D + R) + gap, 2 * (2 * R + gap))
+  local cols = math.ceil(math.sqrt(n))
+  local rows = math.ceil(n / cols)
+  local ax, ay, bx, by = {}, {}, {}, {}
+  for k = 1, n do
+    local gx = ((k - 1) % cols - (cols - 1) / 2) * side
+    local gy = (math.floor((k - 1) / cols) - (rows - 1) / 2) * side
+    discs(list[k][1], ca, 0)
+    discs(list[k][2], cb, 0)
+    ax[k], ay[k] = gx, gy
+    if apart then
+      bx[k], by[k] = gx + side / 2, gy
+    else
+      bx[k], by[k] = gx + (cb[1] - ca[1]), gy + (cb[2] - ca[2])
+    end
+  end
+  return ax, ay, bx, by, side
+end
+
 --- Outlines for the Concave construction table, as flat lists {x1, y1, ...} of n vertices:
 ---   'star'  a random star: one vertex in each of n equal angular sectors (so at sorted random
 ---           angles), each at a random radius in [0.2, 1] -- spiky, about half the vertices
