@@ -99,6 +99,12 @@ local function tieOf(x0, y0, x1, y1, ax0, ay0, ax1, ay1, dl)
   return (TIE * ((ax1 - ax0) + (ay1 - ay0)) + ROUND * m) / dl
 end
 
+-- A filter moved the body being moved, or added or removed a member of it: an error.
+local function moverChanged(away)
+  fail(('%s: a filter moved the body being moved, or added or removed a member of it (move or change'
+    .. ' other bodies only, or change the goal)'):format(away and 'strike.Space:move' or 'strike.Space:cast'))
+end
+
 local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cache, pad, game, skin)
   local x0, y0, x1, y1 = b:getBounds()
   local ax0, ay0, ax1, ay1 = x0, y0, x1, y1
@@ -151,7 +157,14 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
       else
         bx0, by0, bx1, by1 = other:getBounds()
       end
-      local p = bx0 <= x1 and bx1 >= x0 and by0 <= y1 and by1 >= y0 and pick(ctx, other, id)
+      local p = bx0 <= x1 and bx1 >= x0 and by0 <= y1 and by1 >= y0
+      if p then
+        p = pick(ctx, other, id)
+        -- (the game's filter ran: it may not have changed the body being moved, whose leaves
+        -- the sweeps below read; a member removed or added leaves a collider unclean, and so
+        -- does a move, as it changes the first leaf's pose stamp)
+        if game and (b._clean == false or (na > 0 and la[1]._pose ~= pose)) then moverChanged(away) end
+      end
       if p then
         local t, x, y, nx, ny, corner, overlapping
         if away then
@@ -219,10 +232,6 @@ local function first(self, level, b, self_id, dx, dy, pick, ctx, away, out, cach
     end
   end
   if game then
-    if na > 0 and la[1]._pose ~= pose then
-      fail(('%s: a filter moved the body being moved (move other bodies only, or change the goal)')
-        :format(away and 'strike.Space:move' or 'strike.Space:cast'))
-    end
     local rechosen = found and self._removals ~= removals and not present(self, out.body)
     if rechosen then
       -- (a filter removed the body hit after it was found: the first of those left; no exact
