@@ -252,6 +252,42 @@ describe('S.triking', function()
   end)
 end)
 
+describe('S.triking keeps nothing alive', function()
+  -- (it tests into scratch MTVs of its own when it has no `out`, or several members: they let
+  -- go of the shapes they name, so that a member removed from its body, or a shape dropped,
+  -- can be collected)
+  local T = S.trikers
+  local function collected(weak)
+    collectgarbage('collect')
+    collectgarbage('collect')
+    return weak[1] == nil and weak[2] == nil
+  end
+
+  it('no shape of a test without out, one member each, hit or miss', function()
+    for _, x in ipairs({ 5, 50 }) do
+      local weak = setmetatable({ H.Circle(0, 0, 4), H.Circle(x, 0, 4) }, { __mode = 'v' })
+      assert.equals(x == 5, S.triking(weak[1], weak[2]) ~= false)
+      assert.is_true(collected(weak), 'x = ' .. x)
+    end
+  end)
+
+  it('no member of a test of bodies with several members, with or without out', function()
+    for _, out in ipairs({ false, S.MTV() }) do
+      for _, x in ipairs({ 5, 50 }) do
+        local weak = setmetatable({ H.Circle(0, 0, 4), H.Circle(x, 0, 4) }, { __mode = 'v' })
+        local a = T.Collider(weak[1], H.Circle(0, 20, 4))
+        local b = T.Collider(weak[2], H.Circle(x, 20, 4))
+        assert.equals(x == 5, S.triking(a, b, out or nil) ~= false)
+        a:remove(1)
+        b:remove(1)
+        -- (the caller's `out` names what it found: filled again by a test of other bodies)
+        if out then S.triking(T.Circle(0, 0, 4), T.Circle(5, 0, 4), out) end
+        assert.is_true(collected(weak), ('out %s, x = %d'):format(tostring(out), x))
+      end
+    end
+  end)
+end)
+
 describe('S.ettle and S.hove', function()
   it('S.ettle moves both colliders half way, apart', function()
     local a, b = S.trikers.Rectangle(0, 0, 10), S.trikers.Rectangle(8, 0, 10)

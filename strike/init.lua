@@ -104,14 +104,17 @@ end
 
 -- Move the points of a contact list past its count k to out._spares, where the next call's
 -- points are taken from (collide/contact.lua, setPoint): #out is the count, whatever the
--- list held before, and its tables are reused.
+-- list held before, and its tables are reused. A spare point lets go of its shapes (a member
+-- removed from a body is not kept alive by a list that once had a point of it).
 local function trim(out, k)
   local n = #out
   if n > k then
     local spares = out._spares or {}
     out._spares = spares
     for i = n, k + 1, -1 do
-      spares[#spares + 1], out[i] = out[i], nil
+      local p = out[i]
+      p.colliderShape, p.collidedShape = false, false
+      spares[#spares + 1], out[i] = p, nil
     end
   end
 end

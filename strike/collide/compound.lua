@@ -86,8 +86,14 @@ function compound.collide(body1, body2, out)
     local collide = collideOf[s1._kind][s2._kind]
     if not collide then args.noKernel(FNAME, s1, s2, body1, body2) end
     local m = collide(s1, s2, out or tmpA)
-    if not (m.depth > 0) then return false end -- luacheck: ignore 581 (NaN reads as no collision)
-    if not out then out = MTV._set(MTV(), m) end
+    if not out then -- (tested into tmpA: a copy goes out, and tmpA lets go of the shapes)
+      local hit = m.depth > 0
+      if hit then out = MTV._set(MTV(), m) end
+      m.colliderShape, m.collidedShape = false, false
+      if not hit then return false end
+    elseif not (m.depth > 0) then -- luacheck: ignore 581 (NaN reads as no collision)
+      return false
+    end
     out.collider, out.collided = r1, r2
     out._poseA, out._poseB = s1._pose, s2._pose
     return out
@@ -161,9 +167,14 @@ function compound.collide(body1, body2, out)
     end
   end
   one1[1], one2[1] = nil, nil -- (bare shapes are not kept alive by strike)
-  if found == 0 then return false end
-  if best ~= out then out = MTV._set(out or MTV(), best) end
-  return stamp(out, r1, r2)
+  if found > 0 then
+    if best ~= out then out = MTV._set(out or MTV(), best) end
+    stamp(out, r1, r2)
+  end
+  -- (nor members by the scratch MTVs: a member removed from its body stays dead)
+  if tmpA ~= out then tmpA.colliderShape, tmpA.collidedShape = false, false end
+  if tmpB ~= out then tmpB.colliderShape, tmpB.collidedShape = false, false end
+  return found > 0 and out
 end
 
 -- A member pair whose depth along its own normal is at most this fraction of the push's

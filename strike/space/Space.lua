@@ -658,6 +658,7 @@ local function contacts(self, rec)
       p.persisted = persisted
     end
   end
+  for i = 1, np do sa[i], sb[i] = false, false end -- (the last contacts' shapes: scratch, let go)
 end
 
 -- Are both bodies of the record still in the space, as the bodies it was made for (not
