@@ -1628,12 +1628,29 @@ end
 -- A collisions() call's own pairs as the model sees them when it returns: `cur`, the pairs
 -- touching then (byKey: by pair key), `f`, its frame (what changed during it); `oStart`, the
 -- serial of the last event before its own events (those before are the rest of the call an
--- error stopped).
+-- error stopped); `memo`, the pairs of each body removed during the call, as they are when it
+-- returns (see inList: read when the rest of a call an error stopped runs, calls later, when
+-- the other body or the pair filter may have changed since).
 function P:segment(f)
   local cur = self:touching()
   local byKey = {}
   for _, p in ipairs(cur) do byKey[p.key] = p end
-  return { f = f, cur = cur, byKey = byKey, oStart = 0 }
+  local memo, gone = {}, {}
+  for b, e in pairs(f.gone) do
+    if not self:E(b) then gone[#gone + 1] = e end
+  end
+  for i, ea in ipairs(gone) do
+    for _, eb in ipairs(self.w.entries) do
+      local x, y = ea, eb
+      if x.rank > y.rank then x, y = y, x end
+      memo[x.rank * K + y.rank] = self:allowed(x, y) and S.triking(x.body, y.body) and 'yes' or 'no'
+    end
+    for j = i + 1, #gone do
+      local eb = gone[j]
+      memo[ea.rank * K + eb.rank] = self:allowed(ea, eb) and S.triking(ea.body, eb.body) and 'yes' or 'no'
+    end
+  end
+  return { f = f, cur = cur, byKey = byKey, oStart = 0, memo = memo }
 end
 
 -- Is the pair `key` (of bodies a, b) in the list the call of segment seg made: 'yes', 'no',
@@ -1651,17 +1668,7 @@ function P:inList(seg, key, a, b)
   -- (removed during the events: the pair as it was, by the rule and S.triking)
   local ea, eb = f.gone[a] or self:E(a), f.gone[b] or self:E(b)
   if not (ea and eb and ea.rank == ra and eb.rank == rb) then return 'maybe' end
-  local memo = seg.memo
-  if not memo then
-    memo = {}
-    seg.memo = memo
-  end
-  local v = memo[key]
-  if v == nil then
-    v = self:allowed(ea, eb) and S.triking(a, b) and 'yes' or 'no'
-    memo[key] = v
-  end
-  return v
+  return seg.memo[key] or 'maybe'
 end
 
 -- What a failing interpretation of a call's events raises (see checkEvents).
@@ -1801,7 +1808,7 @@ function P:tryEvents(ctx, seg, H, s, outcome)
         evs[s + 1].event, evs[s + 1].a, evs[s + 1].b) end
     else
       if outcome == 'callback' and s == m then bad(m + 1, 'a callback raised an error, and no event was running') end
-      local own = { f = seg.f, cur = seg.cur, byKey = seg.byKey, oStart = ctx.base + s }
+      local own = { f = seg.f, cur = seg.cur, byKey = seg.byKey, oStart = ctx.base + s, memo = seg.memo }
       local at = self:validatePart(bad, own, evs, s + 1, m, nil, open, outcome == 'completed', ctx.base + s)
       if outcome == 'callback' then pend = { seg = own, ptr = at } end
     end
