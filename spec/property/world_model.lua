@@ -2254,6 +2254,8 @@ function P:checkMove(what, plan, pre, f, ax, ay, cols, k)
       end
     end
   end
+  -- (a body added during the move, by a filter: met at any time, or not)
+  for b in pairs(f.added) do unsureB[b] = -huge end
   local snaps = plan.opts and plan.opts.snap and plan.opts.snap > 0
   local up = plan.opts and plan.opts.up
   local ux, uy = 0, -1
