@@ -2224,6 +2224,10 @@ function P:checkMove(what, plan, pre, f, ax, ay, cols, k)
   -- unsure: a chain in the overlap, a move along the overlap's normal)
   local tolT = self:tolT(L)
   local roundoff = 1e-10 * (self.span + L)
+  -- (docs/moving.md: a body overlapping at the start counts when the move goes further in by
+  -- more than space.INTO of its length plus the rounding of its coordinates, 2^-48 of the
+  -- largest; within twice that, either way)
+  local grain = 2 * (self.space.INTO * L + 2 ^ -48 * (self.span + self.w:side() + L))
   local best, sureHits, unsureB = huge, {}, {}
   for _, b in ipairs(pre.bodies) do
     local e = self:E(b)
@@ -2234,7 +2238,8 @@ function P:checkMove(what, plan, pre, f, ax, ay, cols, k)
       local t, sure = nil, not ch
       if m then
         local dn = (pre.dx * m.nx + pre.dy * m.ny) / L
-        if m.chain or abs(dn) <= 1e-9 or m.depth <= roundoff then -- (or touching, within round-off)
+        -- (or touching, within round-off; or going in by no more than the grain)
+        if m.chain or abs(dn) <= 1e-9 or m.depth <= roundoff or abs(dn) * L <= grain then
           t, sure = 0, false
         elseif dn > 0 then
           t = 0
