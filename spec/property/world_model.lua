@@ -150,6 +150,7 @@ function WM.new(seed, index, F, stats)
   self.moving = {}              -- bodies a move in progress is moving -> count
   self.movePlans = {}           -- the moves in progress (their plans)
   self.probes = {}              -- bodies a query in progress asks about -> count
+  self.casting = {}             -- bodies a cast in progress is moving -> count
   self.cbs = { begin = {}, stay = {}, ['end'] = {} } -- registrations, in order (the recorder first)
   self.open = {}                -- pair key -> { a, b }: begun and not ended (the events seen)
   self.evSerial = 0             -- events so far (the recorder's calls): the stream's serials
@@ -845,7 +846,8 @@ function P:geometryChange(X)
     end, desc = 'Collider:add to', tx = cx, ty = cy, what = 'memberAdd' }
   elseif MUTABLE[kind] and r < 0.34 then
     local count = select('#', X:unpack())
-    if count > 1 then
+    -- (of the body a cast is moving: see FEATURES.memberRemovedFromCast)
+    if count > 1 and (self.F.memberRemovedFromCast or not self.casting[X]) then
       local i = rng:int(1, count)
       local cx, cy = X:getCentroid()
       local first = true
@@ -1514,8 +1516,10 @@ function Q.cast(self, target, X)
   local out, ohow = self:outFor('cast')
   local what = self:fmt('cast(%s %s, %s, %s, %s, %s)', how, body, dx, dy, qf.desc, ohow)
   self:log(what)
+  self.casting[body] = (self.casting[body] or 0) + 1
   local f, res = self:probing(body, self.attempt, self, 'cast', self.space.cast, self.space, body, dx, dy, qf.filter,
     out)
+  self.casting[body] = self.casting[body] > 1 and self.casting[body] - 1 or nil
   self:release(qf)
   if oor then return self:rangeError(what, 'strike.Space:cast', f, res, body, cx, cy, qf.script) end
   if self:subjectMoved(what, 'strike.Space:cast', f, res, body) then return end
