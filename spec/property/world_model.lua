@@ -141,6 +141,8 @@ function WM.new(seed, index, F, stats)
   setmetatable(w.info, { __mode = 'k' }) -- (the model must not keep a dropped body alive)
   self.w, self.space, self.rng, self.F, self.stats = w, w.space, rng, F, stats
   self.seed, self.index = seed, index
+  -- (what the program leans toward, by the bits of its index: see LEAN_WEIGHTS)
+  self.lean = { events = index % 2 == 1, pair = floor(index / 2) % 2 == 1, moves = floor(index / 4) % 2 == 1 }
   self.span = w.s + abs(w.cx) + abs(w.cy)
   self.hist, self.nhist = {}, 0
   self.stepNo = 0
@@ -435,6 +437,50 @@ local ACTION_ORDER = { 'query', 'collisions', 'remove', 'add', 'transform', 'spa
   'on', 'off', 'raise', 'badCall', 'caught', 'moveSubject' }
 WM.ACTIONS = ACTION_ORDER
 
+-- Leans. The random mix reaches some chains in few programs: an error in a callback with
+-- others after it on the same event (the next collisions() gives them the event), the pair
+-- filter raising, removing a body or calling collisions(), a filter moving the body being
+-- moved, a snapped move over walkable ground, a call out of the range of motion. Each program
+-- leans toward some of three areas, by the bits of its index, so that each lean is in half
+-- the programs of any run (and the spec's coverage checks hold for any seed):
+--  * events: callbacks from the start, the first raising, with one or two after it on its
+--    event; callbacks' scripts act more often, and more often remove, raise, call
+--    collisions() and off (LEAN_WEIGHTS), and half of them also remove, catch an error,
+--    change a member or call on (LEAN_ACTIONS);
+--  * pair: a pair filter from the start that raises, removes or calls collisions(); pair
+--    filters' scripts act more often, more often remove and call collisions(), and half of
+--    them also raise, remove or call collisions();
+--  * moves: a floor and a walker on it, walked along with snap and a slope (addWalker);
+--    move options, snap and slope more often, a move with snap not going up; calls out of
+--    the range of motion more often; the filters of moves and casts act more often and move
+--    the body being moved more often, and half of the move filters also move it, remove,
+--    catch an error or change a member; addResponse more often.
+-- A lean only weighs: every operation stays possible, and a feature switched off stays off.
+local LEAN_WEIGHTS = {
+  event = { remove = 3, raise = 3, collisions = 2, off = 4 },
+  pair = { remove = 4, collisions = 3 },
+  move = { moveSubject = 3 },
+  query = { moveSubject = 6 }, -- (a cast's filter, which has a subject)
+}
+
+-- What half the scripts of a kind the program leans toward do, besides their random actions
+-- (one of these; the events lean has its raising callback instead: see run).
+local LEAN_ACTIONS = {
+  event = { 'remove', 'caught', 'member', 'on' },
+  pair = { 'raise', 'remove', 'collisions' },
+  move = { 'moveSubject', 'remove', 'caught', 'member' },
+  query = { 'moveSubject' },
+}
+
+-- Does the program lean toward the scripts of this kind (`subject`: of a move or cast)?
+function P:leaning(kind, subject)
+  local lean = self.lean
+  if kind == 'event' then return lean.events end
+  if kind == 'pair' then return lean.pair end
+  if kind == 'move' or kind == 'query' and subject then return lean.moves end
+  return false
+end
+
 function P:feature(op, kind)
   local F = self.F
   if not F[op] then return false end
@@ -455,6 +501,8 @@ function P:pickAction(kind, s)
     if op == 'spaceMove' and kind == 'move' then wgt = 2 end
     if op == 'raise' and kind == 'event' then wgt = 2 end
     if op == 'raise' and kind == 'pair' then wgt = 5 end
+    local lw = self:leaning(kind, s.subject) and LEAN_WEIGHTS[kind][op]
+    if lw and wgt > 0 then wgt = lw end
     if wgt > 0 and self:feature(op, kind) then
       total = total + wgt
       list[#list + 1] = { op, total }
@@ -486,7 +534,8 @@ function P:newScript(kind, pure, subject)
     end
     s.resps = list
   end
-  if not pure and self.sdepth < MAXD and self.F.scripts and rng:next() < 0.6 then
+  local lean = not pure and self:leaning(kind, subject)
+  if not pure and self.sdepth < MAXD and self.F.scripts and rng:next() < (lean and 0.85 or 0.6) then
     for _ = 1, rng:int(1, 2) do
       local op = self:pickAction(kind, s)
       if op then
@@ -494,7 +543,25 @@ function P:newScript(kind, pure, subject)
       end
     end
   end
+  if lean and LEAN_ACTIONS[kind] and rng:next() < 0.5 then self:leanAction(s, LEAN_ACTIONS[kind]) end
   return s
+end
+
+-- Add to script s one of the actions `ops` that the features allow (none when scripts run
+-- too deep already), on one of its first calls or on every k-th.
+function P:leanAction(s, ops)
+  if not self.F.scripts or self.sdepth >= MAXD then return end
+  local list = {}
+  for _, op in ipairs(ops) do
+    if self:feature(op, s.kind) and (op ~= 'moveSubject' or s.subject) and (op ~= 'on' and op ~= 'off' or self.events)
+    then
+      list[#list + 1] = op
+    end
+  end
+  if #list == 0 then return end
+  local rng = self.rng
+  local op = list[rng:int(1, #list)]
+  s.actions[#s.actions + 1] = { op = op, at = rng:int(1, 3), every = rng:next() < 0.4 and rng:int(2, 6) or nil }
 end
 
 function P:describeScript(s)
@@ -1508,7 +1575,8 @@ function Q.cast(self, target, X)
     dx, dy = d * cos(a), d * sin(a)
   end
   if rng:next() < 0.02 then dx, dy = 0, 0 end -- (a cast that does not move: what it overlaps)
-  if rng:next() < 0.03 and body:getRadius() > 0 then -- (to the edge of the range of motion, or beyond)
+  -- (to the edge of the range of motion, or beyond)
+  if rng:next() < (self.lean.moves and 0.08 or 0.03) and body:getRadius() > 0 then
     if rng:next() < 0.5 then dx = self:rangeEdge(body, dx) - cx else dy = self:rangeEdge(body, dy) - cy end
   end
   local oor = self:outOfRange(body, cx, cy, cx + dx, cy + dy)
@@ -1993,7 +2061,8 @@ function P:planMove(M, target)
     plan.gx, plan.gy = cx + d * cos(a), cy + d * sin(a)
     if rng:next() < 0.3 then plan.gx, plan.gy = self:aim() end
   end
-  if rng:next() < 0.015 and M:getRadius() > 0 then -- (beyond the edge of the range of motion)
+  local far = rng:next() < (self.lean.moves and 0.05 or 0.015) and M:getRadius() > 0
+  if far then -- (beyond the edge of the range of motion)
     -- (by more than a rounding: the move's checks read a copy of a body changed just before,
     -- whose radius may differ from the body's in the last place; casts test the very edge)
     local lim = (self.space.REACH - 1) * M:getRadius()
@@ -2006,16 +2075,37 @@ function P:planMove(M, target)
     plan.filter = self:moveFilterFn(plan.script, plan)
   end
   local acts = plan.script and #plan.script.actions > 0
-  if rng:next() < (acts and 0.7 or 0.45) then
+  local lean = self.lean.moves
+  if rng:next() < ((acts or lean) and 0.7 or 0.45) then
     local opts = {}
-    if rng:next() < 0.8 then opts.snap = w.s * logRange(rng, 0.05, 2) end
-    if rng:next() < (acts and 0.9 or 0.7) then opts.slope = rng:range(0.2, 1.3) end
+    if rng:next() < (lean and 0.95 or 0.8) then opts.snap = w.s * logRange(rng, 0.05, 2) end
+    if rng:next() < ((acts or lean) and 0.9 or 0.7) then opts.slope = rng:range(0.2, 1.3) end
     if rng:next() < 0.3 then
       local a = rng:range(-pi, pi)
       opts.up = { cos(a), sin(a) }
     end
     if rng:next() < 0.3 then opts.step = w.s * logRange(rng, 0.05, 1) end
     plan.opts = opts
+    if lean and opts.snap and not far then
+      -- (a move that does not go up, which the snap check needs: toward a body below the
+      -- start, where there is ground; else the goal mirrored when it is above the start)
+      local ux, uy = 0, -1
+      if opts.up then ux, uy = opts.up[1], opts.up[2] end
+      local cx, cy = M:getCentroid()
+      local E = self.w.entries
+      for _ = 1, 4 do
+        local b = #E > 0 and E[rng:int(1, #E)].body
+        if b and b ~= M and (not b.shapes or b:getShapeCount() > 0) then
+          local bx, by = b:getCentroid()
+          if (bx - cx) * ux + (by - cy) * uy < 0 then
+            plan.gx, plan.gy = bx, by
+            break
+          end
+        end
+      end
+      local d = (plan.gx - cx) * ux + (plan.gy - cy) * uy
+      if d > 0 then plan.gx, plan.gy = plan.gx - 2 * d * ux, plan.gy - 2 * d * uy end
+    end
   end
   return plan
 end
@@ -2062,6 +2152,7 @@ end
 
 function Q.move(self, target, _, sub, plan)
   local E = self.w.entries
+  if not plan and not target and self.lean.moves and self.rng:next() < 0.25 then plan = self:walkPlan() end
   if not plan then
     if #E == 0 then return end
     local M
@@ -2767,6 +2858,9 @@ end
 
 local CHANGE_WEIGHTS = { transform = 4, member = 1.5, add = 2, remove = 1.5, set = 1.5, touch = 1, setFilter = 0.5,
   on = 0.7, off = 0.5, addResponse = 0.2 }
+local LEAN_CHANGE_WEIGHTS = {} -- (leaning toward moves: addResponse more often)
+for k, v in pairs(CHANGE_WEIGHTS) do LEAN_CHANGE_WEIGHTS[k] = v end
+LEAN_CHANGE_WEIGHTS.addResponse = 0.8
 local QUERY_WEIGHTS = { collisions = 3, check = 2, queryPoint = 1.5, queryRect = 1.5, queryShape = 1.5, rayCast = 2,
   rayCastAll = 1.5, cast = 2, move = 4, bodies = 0.8 }
 
@@ -2812,7 +2906,7 @@ function P:step()
     self.stepNo = self.stepNo + 1
     self:top(function() Q[q](self, target, X, sub) end)
   elseif r < 0.72 then
-    local name = weighted(rng, WM.CHANGES, CHANGE_WEIGHTS, F.changes)
+    local name = weighted(rng, WM.CHANGES, self.lean.moves and LEAN_CHANGE_WEIGHTS or CHANGE_WEIGHTS, F.changes)
     local ok, _, _, run = self:change(name)
     if ok then self:top(run) end
   else
@@ -2825,12 +2919,20 @@ end
 --- Run the program: populate, then `steps` steps, then the end checks.
 function P:run(steps)
   local rng, w, F = self.rng, self.w, self.F
-  self.events = F.events and rng:next() < 0.85
+  self.events = F.events and (self.lean.events or rng:next() < 0.85)
   if self.events then
     for _, E in ipairs({ 'begin', 'stay', 'end' }) do
       local reg = { event = E, fn = self:recorderFn(E), tag = 'recorder:' .. E }
       self.cbs[E][1] = reg
       self.space:on(E, reg.fn)
+    end
+    if self.lean.events then
+      -- (a callback that raises, then one or two more on the same event)
+      local E = ({ 'begin', 'stay', 'stay', 'end' })[rng:int(1, 4)]
+      local s = self:newScript('event')
+      self:leanAction(s, { 'raise' })
+      self:on(E, s)
+      for _ = 1, rng:int(1, 2) do self:on(E, self:newScript('event')) end
     end
     for _ = 1, rng:int(0, 5) do
       local E = ({ 'begin', 'stay', 'end' })[rng:int(1, 3)]
@@ -2841,9 +2943,16 @@ function P:run(steps)
     self:addResponse('stopper', self:newScript('response'))
     self:addResponse('passer', self:newScript('response'))
   end
-  if rng:next() < 0.4 then self:setPairFilter(self:newScript('pair')) end
+  if self.lean.pair then -- (a pair filter from the start, which raises, removes or calls collisions())
+    local s = self:newScript('pair')
+    self:leanAction(s, LEAN_ACTIONS.pair)
+    self:setPairFilter(s)
+  elseif rng:next() < 0.4 then
+    self:setPairFilter(self:newScript('pair'))
+  end
   local n0 = 5 + floor(35 * rng:next() ^ 2)
   for _ = 1, n0 do self:addBody(w:newBody(), rng:next() < 0.6 and w:randomOpts() or nil) end
+  if self.lean.moves then self:addWalker() end
   if F.crowd and self.index % 10 == 0 then self:crowd() end
   self:count('programs')
   self:count('bodies at the start', n0)
@@ -2853,6 +2962,37 @@ function P:run(steps)
   end
   self:count('steps', self.stepNo)
   if F.gc then self:gcCheck() end
+end
+
+-- The moves lean: a floor below the bodies and a walker on it; a quarter of the moves are
+-- walks along it with snap and a slope (the snap check needs ground below the end of a move
+-- that does not go up). Both are bodies as any other: the program may move or remove them.
+function P:addWalker()
+  local w = self.w
+  local L, h, r = w:side(), w:snap(w.s), w.s * 0.4
+  local top = w:snap(w.cy + L)
+  local ground = w:register(S.hapes.Rectangle(w:snap(w.cx), top + h / 2, w:snap(2 * L), h), 'shape', true)
+  self:addBody(ground, nil)
+  local walker = w:register(S.hapes.Circle(w.cx, top - r * 1.05, r), 'shape')
+  self:addBody(walker, nil)
+  self.walk = setmetatable({ ground = ground, walker = walker }, { __mode = 'v' }) -- (the model keeps no body alive)
+end
+
+-- A walk of the walker (see addWalker): along the ground to a point above it, or nil when
+-- the walker is not in the space or is being moved.
+function P:walkPlan()
+  local walk, rng = self.walk, self.rng
+  local M, ground = walk and walk.walker, walk and walk.ground
+  if not (M and ground and self:E(M) and self:E(ground)) or self.moving[M] then return nil end
+  local _, y = M:getCentroid()
+  local x0, _, x1 = ground:getBounds()
+  local plan = { M = M, fc = {}, pfc = {}, gx = rng:range(x0, x1), gy = y,
+    opts = { snap = self.w.s * logRange(rng, 0.1, 1), slope = rng:range(0.5, 1.3) } }
+  if rng:next() < 0.3 then
+    plan.script = self:newScript('move', false, M)
+    plan.filter = self:moveFilterFn(plan.script, plan)
+  end
+  return plan
 end
 
 -- A row of coins and a bullet through them with a filter that crosses everything; then the

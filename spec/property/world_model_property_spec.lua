@@ -14,7 +14,11 @@
 -- move, set, call on/off (of themselves, of later callbacks) and setFilter, make bad calls,
 -- and raise errors, which the program's pcall catches; then the space must still agree with
 -- the model, and the events stay balanced. At the end of each program, nothing the program
--- let go may be kept alive by the space.
+-- let go may be kept alive by the space. Each program leans toward some of the chains the
+-- random mix reaches in few programs (by the bits of its index: world_model.lua, LEAN_WEIGHTS):
+-- an error in a callback with others after it on the same event, the pair filter raising,
+-- removing or calling collisions(), walks with snap along a floor, a filter moving the body
+-- being moved, calls out of the range of motion.
 --
 -- Replay: a run goes through every program and lists each distinct failure once (how many
 -- programs, the first one) and the first in full: the seed and the program (STRIKE_SEED=<seed>
