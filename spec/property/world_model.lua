@@ -168,15 +168,25 @@ function WM.new(seed, index, F, stats)
   self.rootOf = setmetatable({}, { __mode = 'kv' }) -- a member probe -> its body
   self.nscript, self.nboom, self.nreg = 0, 0, 0
   self.serials = { collisions = 0, move = 0 } -- (calls so far, any depth)
+  self.seen = {}                -- the stats counted in this program
   self.budget = BUDGET
   w.fail = function(fmt, ...) self:fail(fmt, ...) end
   w.note = function(_, fmt, ...) self:log(fmt, ...) end
   return self
 end
 
+-- Count v (default 1) of k in the run's stats; stats.present[k] counts the programs in which k
+-- happened at least once (the spec's coverage checks read those).
 function P:count(k, v)
   local st = self.stats
-  st[k] = (st[k] or 0) + (v or 1)
+  v = v or 1
+  st[k] = (st[k] or 0) + v
+  if v > 0 and not self.seen[k] then
+    self.seen[k] = true
+    local present = st.present or {}
+    st.present = present
+    present[k] = (present[k] or 0) + 1
+  end
 end
 
 function P:D(b) return self.w:describe(b) end

@@ -156,7 +156,7 @@ describe('the world against its model', function()
       end
     end)
     if jit then jit.on() end
-    stats.failed = failed
+    stats.failed, stats.ran = failed, ran
     if not ok then error(err, 0) end
     if failed > 0 then
       -- (wrong answers and crashes first, then what is kept alive)
@@ -233,9 +233,20 @@ describe('the world against its model', function()
     want(on('moveSubject', 'MoveFilter'), 'action moveSubject in move', 'subject-moved errors')
     want(on('moveSubject', 'QueryFilter'), 'action moveSubject in query')
     want(true, 'out-of-range calls')
-    local least = math.ceil(20 * budget.SHARE) -- (of each, in the programs run on this VM)
+    -- Each in at least one program in 18 of those run (20 of LuaJIT's 360, 5 of the 90 run on
+    -- Lua 5.1-5.4), counted in programs, not in calls: a program draws its own world and
+    -- calls, so the count is a sum over independent programs, and a few programs that do a
+    -- thing many times cannot stand for the rest. The rarest (the pair filter stopping
+    -- collisions(), snapped moves checked) are in 22% of the programs (the leans of
+    -- world_model.lua see to it; measured over 24 seeds), the next in 24% and more: the 70
+    -- checks together then fail for about one seed in 100,000 on 90 programs, and never in
+    -- practice on 360 (1e-18). The 71st, moves through 64 or more, is every crowd (every 10th
+    -- program).
+    local least = math.ceil(stats.ran / 18)
+    local present = stats.present or {}
     for _, k in ipairs(need) do
-      assert((stats[k] or 0) >= least, ('seed %d: only %d %s'):format(SEED, stats[k] or 0, k))
+      assert((present[k] or 0) >= least, ('seed %d: %s in only %d of the %d programs (at least %d)'):format(SEED, k,
+        present[k] or 0, stats.ran, least))
     end
   end)
 end)
