@@ -3025,8 +3025,7 @@ function P:crowd()
   local plan = { M = bullet, fc = {}, pfc = {}, gx = x0 + 2 * s * (n + 2), gy = y, script = sc }
   plan.filter = self:moveFilterFn(sc, plan)
   self.stepNo = self.stepNo + 1
-  self:count('op move')
-  self:count('crowd moves')
+  self:count('crowd moves') -- (not an 'op move': those are the random ones)
   self:top(function() Q.move(self, nil, nil, nil, plan) end)
   self:top(function()
     for _, c in ipairs(coins) do self:removeBody(c) end
