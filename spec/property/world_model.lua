@@ -9,68 +9,69 @@
 ---  * answers computed from the per-body API only: S.triking (pairs, check, queryShape, and
 ---    queryRect against a Rectangle built here), containsPoint, body:rayCast, S.weep (cast,
 ---    and what a move may meet on its first leg), S.ite (the contact counts), and the pair rule
----    (layers, masks, groups, then the pair filter) as the README words it.
+---    (layers, masks, groups, then the pair filter) as docs/space.md words it ("Who collides").
 ---
---- Filters, pair filters, move filters, responses and event callbacks are small "scripts":
---- a pure answer computed from the body's id (so the model knows it), plus actions run on
---- chosen calls: a nested query checked against the model on the spot, add, remove, move
---- (a transform or a nested space:move) other bodies, change members, set options, on/off
---- (of itself, of later callbacks), setFilter, a bad call caught by pcall, a nested query
---- whose own filter raises (caught), moving the body that the move or cast it filters is
---- moving, and raising an error that the program's pcall around the outer call catches.
---- Every change a script makes is recorded in the frames of the calls in progress: a body
---- removed, added, moved or given other options during a call is "unsure" for that call
---- (README, "Your code inside a call": bodies added or moved during the call "may or may
---- not count for it"), except that a body removed during a call never appears in its
---- results. Every later call is checked against the model as usual: after an error, the
---- space must agree with the model.
+--- Filters, pair filters, move filters, responses and event callbacks are small "scripts": a
+--- pure answer computed from the body's id (so the model knows it), plus actions run on chosen
+--- calls: a nested query checked against the model on the spot, add, remove, move (a transform
+--- or a nested space:move) other bodies, change members, set options, on/off (of itself, of
+--- later callbacks), setFilter, a bad call caught by pcall, a nested query whose own filter
+--- raises (caught), moving the body that the move or cast it filters is moving, and raising an
+--- error that the program's pcall around the outer call catches. Every change a script makes is
+--- recorded in the frames of the calls in progress: a body removed, added, moved or given other
+--- options during a call is "unsure" for that call (docs/space.md, "Your code inside a call":
+--- bodies added or moved during the call "may or may not count for it"), except that a body
+--- removed during a call never appears in its results. Every later call is checked against the
+--- model as usual: after an error, the space must agree with the model.
 ---
---- The README's rules this model checks, beyond the answers of each query:
----  * events (README, "Events"; "Your code inside a call", Errors): each collisions() call's
----    events are its ends, in pair order, then its begins and stays, in pair order; a pair
----    begins once, stays and ends only after it began, and ends once, when it left the list
----    (or a body went); a begin or stay names two bodies in the space (a pair whose body was
----    removed before its turn gets no further event in that call: it ends at the next call if
----    it began). The recorder (the first callback of every event, never raising) logs the
----    events; every game callback registered when an event starts gets it, in registration
----    order, once (one registered later gets the next events; one removed with off never
----    again). An error in a callback stops the events: the next collisions() first gives the
----    event in progress to the callbacks after the one that raised, then runs the events left,
----    then its own (checkEvents: the log of a call is the rest of the stopped call followed by
----    its own, every split tried); an error in the pair filter forgets that call's pairs: no
----    event of its own, and the next call starts from the last one that finished;
+--- The documented rules this model checks (docs/space.md, docs/moving.md), beyond the answers
+--- of each query:
+---  * events (docs/space.md, "Sensors and events", Events; "Your code inside a call", Errors):
+---    each collisions() call's events are its ends, in pair order, then its begins and stays,
+---    in pair order; a pair begins once, stays and ends only after it began, and ends once,
+---    when it left the list (or a body went); a begin or stay names two bodies in the space (a
+---    pair whose body was removed before its turn gets no further event in that call: it ends
+---    at the next call if it began). The recorder (the first callback of every event, never
+---    raising) logs the events; every game callback registered when an event starts gets it, in
+---    registration order, once (one registered later gets the next events; one removed with off
+---    never again). An error in a callback stops the events: the next collisions() first gives
+---    the event in progress to the callbacks after the one that raised, then runs the events
+---    left, then its own (checkEvents: the log of a call is the rest of the stopped call
+---    followed by its own, every split tried); an error in the pair filter forgets that call's
+---    pairs: no event of its own, and the next call starts from the last one that finished;
 ---  * collisions()' list: compacted after the events, it names no body removed during the
 ---    call; collisions() from inside collisions() is an error that changes nothing;
----  * a filter that moves the body being moved by move or cast (a transform of that body as
----    a whole) makes the call raise the README's error; a move or cast whose centroid, at the
----    start or at the goal, is beyond REACH - 1 sizes of the origin raises the error naming
----    the limit, and nothing moves and no game code runs (some are made on purpose, on the
----    edge of the range and beyond);
----  * at the end of each program, the space's own tables keep no removed body and no
----    function it no longer uses alive, but the last collision list of each move level
----    (space._cols[d][i], the README's move results, reused by the next move); the library's
----    module scratch, reached through its functions' upvalues, is not walked.
+---  * a filter that moves the body being moved by move or cast (a transform of that body as a
+---    whole) makes the call raise the error docs/space.md promises; a move or cast whose
+---    centroid, at the start or at the goal, is beyond REACH - 1 sizes of the origin raises the
+---    error naming the limit, and nothing moves and no game code runs (some are made on
+---    purpose, on the edge of the range and beyond);
+---  * at the end of each program, the space's own tables keep no removed body and no function
+---    it no longer uses alive, but the last collision list of each move level
+---    (space._cols[d][i], a move's results, which docs/moving.md says the next move reuses);
+---    the library's module scratch, reached through its functions' upvalues, is not walked.
 ---
---- What the README leaves open, and what this model assumes there (also marked ASSUMED below):
+--- What the docs leave open, and what this model assumes there (also marked ASSUMED below):
 ---  * a change to the body a query asks about (check, queryShape), from its own filter: only
 ---    no crash; a change of a member of the body a cast or move is moving (not the body as a
 ---    whole): the error or an answer; the body a move is moving is never touched by its
 ---    responses;
----  * a body met by a move, then removed during it, may be in the move's list (README,
----    "Moving bodies": a body the filter removes "is not met after that"): at most once per
----    time the move could meet it (a call of its filter, or else of the pair filter, that
----    returned with it still in the space);
+---  * a body met by a move, then removed during it, may be in the move's list (docs/moving.md,
+---    "Moving bodies in a space": a body the filter removes "is not met after that"): at most
+---    once per time the move could meet it (a call of its filter, or else of the pair filter,
+---    that returned with it still in the space);
 ---  * a move: the first collision is the earliest S.weep hit along the first leg among the
 ---    bodies it may meet (a body overlapping at the start counts at t = 0 when the move goes
 ---    further in; a chain in the overlap, or a move along it, may go either way), or one after
----    exact fits past the bodies met before it (README, Exact fits; see afterFit); it ends
----    clear of every solid body it started clear of (chains, one-sided, aside; a depth within
----    round-off aside); it never rests exactly touching a solid body it met (but where a leg
----    starts touching); with nothing solid on the line it ends at its goal, every body crossed
----    reported once; with snap and a slope (the README defines walkable by the slope), a move
----    that does not go up ends on walkable ground within snap, when there is some; and it is
----    never stuck meeting bodies at t = 0 leg after leg without moving (the issue: a cap on a
----    move's legs never leaves a body short of where its responses take it).
+---    exact fits past the bodies met before it (docs/moving.md, Exact fits; see afterFit); it
+---    ends clear of every solid body it started clear of (chains, one-sided, aside; a depth
+---    within round-off aside); it never rests exactly touching a solid body it met (but where a
+---    leg starts touching); with nothing solid on the line it ends at its goal, every body
+---    crossed reported once; with snap and a slope (docs/moving.md, "Characters: slopes,
+---    snapping, steps", defines walkable by the slope), a move that does not go up ends on
+---    walkable ground within snap, when there is some; and it is never stuck meeting bodies at
+---    t = 0 leg after leg without moving (the issue: a cap on a move's legs never leaves a body
+---    short of where its responses take it).
 local S = require 'strike'
 local PRNG = require('spec.helpers.prng')
 local World = require('spec.property.space_world')
@@ -252,7 +253,7 @@ function P:rank(b)
   return i and i.rank
 end
 
--- The pair rule of the README ("Who collides"): a shared non-zero group decides alone, else
+-- The pair rule of docs/space.md ("Who collides"): a shared non-zero group decides alone, else
 -- each layer must be in the other's mask; then the pair filter, asked with a added before b.
 function P:allowed(ea, eb)
   if ea.rank > eb.rank then ea, eb = eb, ea end
@@ -296,7 +297,7 @@ end
 -- A call in progress: the bodies removed, added, moved (transformed, members changed, moved
 -- by space:move) and given options during it, and whether the pair filter changed;
 -- `transformed`: the bodies moved as a whole (a transform of the body itself, or a
--- space:move of it), which the README forbids for the body a move or cast is moving.
+-- space:move of it), which docs/space.md forbids for the body a move or cast is moving.
 function P:push(kind)
   local f = { kind = kind, removed = {}, added = {}, moved = {}, opts = {}, transformed = {}, pf = false, any = false,
     gone = {} } -- (gone: a body removed -> its entry then)
@@ -327,23 +328,23 @@ function P:effectPf()
   end
 end
 
--- Is body b unsure for the call of frame f: moved, added or given options during it (the
--- README: "bodies added or moved during the call may or may not count for it"), or removed
--- without FEATURES.strictRemoved.
+-- Is body b unsure for the call of frame f: moved, added or given options during it
+-- (docs/space.md, "Your code inside a call": "bodies added or moved during the call may or may
+-- not count for it"), or removed without FEATURES.strictRemoved.
 function P:unsure(f, b)
   return f.moved[b] or f.added[b] or f.opts[b] or (f.removed[b] and not self.F.strictRemoved)
 end
 
 -- Was body b removed during the call of frame f (and is not back)? Then it is in none of the
--- call's results (README: "A body removed during a call never appears in that call's
--- results, even when it was found before it was removed"; for collisions(), the list is
--- compacted after the events).
+-- call's results (docs/space.md, "Your code inside a call": "A body removed during a call never
+-- appears in that call's results, even when it was found before it was removed"; for
+-- collisions(), the list is compacted after the events).
 function P:gone(f, b)
   return f.removed[b] and not self:E(b) and self.F.strictRemoved
 end
 
 -- Did the body a query asks about (or, for a member, its body) change during the call? Then
--- anything goes for its answer (ASSUMED: the README says nothing of it).
+-- anything goes for its answer (ASSUMED: the docs say nothing of it).
 function P:probeChanged(f, q)
   local root = self.rootOf[q]
   return f.moved[q] or f.removed[q] or f.added[q] or f.opts[q] or root and (f.moved[root] or f.removed[root]
@@ -388,7 +389,7 @@ end
 ---------------------------------------------------------------------------------------
 -- What strike gave back must stay as it was: a new table (no out) for good, collisions()'
 -- records until the next collisions(), a move's list until the next move (README,
--- "Conventions": reused tables; "The space"; "Moving bodies")
+-- "Conventions", Reused tables; docs/moving.md, "The collisions list is the space's")
 
 local KEPT_FIELDS = { 'a', 'b', 'body', 'distance', 'other', 'type', 't', 'touchX', 'touchY' }
 
@@ -698,11 +699,12 @@ end
 
 -- The event being delivered in the collisions() call ctx: { ev = the recorder's entry, rest =
 -- the game's callbacks registered for its kind when it started, in order, pos = the next one
--- due }. The README ("Events"): callbacks run in the order they were registered; one
--- registered while the events run gets them from the next event on; one removed with off is
--- never called after off returns. ("Your code inside a call", Errors): an error in a callback
--- stops the events there, and the next collisions() runs the rest first -- the callbacks of
--- that event not yet called, then the events left -- so each callback sees every event once.
+-- due }. docs/space.md ("Sensors and events", Events): callbacks run in the order they were
+-- registered; one registered while the events run gets them from the next event on; one removed
+-- with off is never called after off returns. ("Your code inside a call", Errors): an error in
+-- a callback stops the events there, and the next collisions() runs the rest first -- the
+-- callbacks of that event not yet called, then the events left -- so each callback sees every
+-- event once.
 function P:finishEvent(ctx)
   local cur = ctx.cur
   if not cur then return end
@@ -736,8 +738,9 @@ function P:recorderFn(E)
     self:check(ev.ra == a and ev.rb == b, 'collisions(): event %d, %s %s-%s: the record holds %s-%s', i, E, a, b, ev.ra,
       ev.rb)
     if E ~= 'end' then
-      -- (README, Errors: a pair whose body was removed during the events gets no further
-      -- event in that call; a body removed and added again is a new body)
+      -- (docs/space.md, "Your code inside a call", Errors: a pair whose body was removed
+      -- during the events gets no further event in that call; "Sensors and events": a body
+      -- removed and added again is a new body)
       local ea, eb = self:E(a), self:E(b)
       self:check(ea and eb, 'collisions(): event %d, %s %s-%s: a body removed from the space before the event', i,
         E, a, b)
@@ -1527,25 +1530,25 @@ function P:rangeError(what, fname, f, r, body, x, y, s, approx)
   self:log('(out of the range of motion: the error)')
 end
 
--- After a cast or move of `body` (its frame f; pcall's results r): the README ("Your code
+-- After a cast or move of `body` (its frame f; pcall's results r): docs/space.md ("Your code
 -- inside a call"): moving the body that move or cast is moving, from a filter, is an error,
 -- raised from the call. A transform of the body as a whole (see push) must raise it; a change
--- of one of its members, or of the body it is a member of, may (the README leaves it open).
+-- of one of its members, or of the body it is a member of, may (the docs leave it open).
 -- Returns true when the call raised it; raises the call's other errors.
 function P:subjectMoved(what, fname, f, r, body)
   local root = self.rootOf[body]
   local must = (f.transformed[body] or root and f.transformed[root]) and World.firstLeaf(body) ~= nil
   local may = must or f.moved[body] or f.transformed[body] or root and (f.moved[root] or f.transformed[root])
   if r[1] then
-    self:check(not must, '%s: a filter moved the body being moved as a whole, and the call raised no error (README:'
-      .. ' an error)', what)
+    self:check(not must, '%s: a filter moved the body being moved as a whole, and the call raised no error'
+      .. ' (docs/space.md: an error)', what)
     return false
   end
   local e = r[2]
   if isFailure(e) or isBoom(e) then error(e, 0) end
   if not (may and type(e) == 'string' and e:find(fname .. ': a filter moved the body being moved', 1, true)) then
-    self:fail('%s raised %s%s', what, tostring(e), must and ' (a filter moved the body being moved: the README promises'
-      .. ' the error "' .. fname .. ': a filter moved the body being moved")' or '')
+    self:fail('%s raised %s%s', what, tostring(e), must and ' (a filter moved the body being moved: docs/space.md'
+      .. ' promises the error "' .. fname .. ': a filter moved the body being moved")' or '')
   end
   self:count('subject-moved errors')
   self:log('(the error: a filter moved the body being moved)')
@@ -1735,11 +1738,11 @@ function P:segment(f)
   return { f = f, cur = cur, byKey = byKey, oStart = 0, memo = memo }
 end
 
--- Is the pair `key` (of bodies a, b) in the list the call of segment seg made: 'yes', 'no',
--- or 'maybe' (a body changed during the call: README, "bodies added or moved during the
--- call may or may not count for it"). A body removed before the call's own events (before
--- it, by an event of the call before, by the pair filter) is in none of its pairs; one
--- removed during them, and not changed otherwise, is in the pairs it had.
+-- Is the pair `key` (of bodies a, b) in the list the call of segment seg made: 'yes', 'no', or
+-- 'maybe' (a body changed during the call: docs/space.md, "bodies added or moved during the
+-- call may or may not count for it"). A body removed before the call's own events (before it,
+-- by an event of the call before, by the pair filter) is in none of its pairs; one removed
+-- during them, and not changed otherwise, is in the pairs it had.
 function P:inList(seg, key, a, b)
   local ra, rb = floor(key / K), key % K
   local ga, gb = self.rankGone[ra], self.rankGone[rb]
@@ -1756,17 +1759,17 @@ end
 -- What a failing interpretation of a call's events raises (see checkEvents).
 local Trial = {}
 
--- The events log[i0..i1]: one part of the sequence of events of the call of segment seg --
--- the rest of a call an error stopped, or a call's own -- going on after position ptr
--- ({sec = 0 for the ends, 1 for begin and stay; key}, or nil). README ("Events"): first
--- 'end' for every pair that touched at the previous call and no longer does, in pair
--- order, then 'begin' or 'stay' for each pair touching, in pair order; balanced against
--- `open` (updated): a pair begins once, stays and ends only after it began, ends once.
--- Pairs that surely touch have the MTV and contacts of S.triking and S.ite. With
--- `complete` (the part ran to its end; else up to its last event), every event due was
--- delivered: an end for each pair begun that surely left the list, a begin or stay for each
--- pair surely in it, unless a body of the pair was removed before its turn (`serial0`: the
--- serial before the part's first event). Returns the position of the last event.
+-- The events log[i0..i1]: one part of the sequence of events of the call of segment seg -- the
+-- rest of a call an error stopped, or a call's own -- going on after position ptr ({sec = 0 for
+-- the ends, 1 for begin and stay; key}, or nil). docs/space.md ("Sensors and events", Events):
+-- first 'end' for every pair that touched at the previous call and no longer does, in pair
+-- order, then 'begin' or 'stay' for each pair touching, in pair order; balanced against `open`
+-- (updated): a pair begins once, stays and ends only after it began, ends once. Pairs that
+-- surely touch have the MTV and contacts of S.triking and S.ite. With `complete` (the part ran
+-- to its end; else up to its last event), every event due was delivered: an end for each pair
+-- begun that surely left the list, a begin or stay for each pair surely in it, unless a body of
+-- the pair was removed before its turn (`serial0`: the serial before the part's first event).
+-- Returns the position of the last event.
 function P:validatePart(bad, seg, evs, i0, i1, ptr, open, complete, serial0)
   local sec, key = -1, -1
   if ptr then sec, key = ptr.sec, ptr.key end
@@ -1885,7 +1888,8 @@ function P:tryEvents(ctx, seg, H, s, outcome)
   end
   if not pend then
     if outcome == 'pf' then
-      -- (README, Errors: an error in the pair filter forgets that call's pairs)
+      -- (docs/space.md, "Your code inside a call", Errors: an error in the pair filter forgets
+      -- that call's pairs)
       if s < m then bad(s + 1, 'event %d (%s %s-%s): an event of a call whose pair filter raised an error', s + 1,
         evs[s + 1].event, evs[s + 1].a, evs[s + 1].b) end
     else
@@ -1898,12 +1902,12 @@ function P:tryEvents(ctx, seg, H, s, outcome)
   return { open = open, pend = pend, s = H and s or 0 }
 end
 
--- The events of a collisions() call against the model. A call an error stopped in a
--- callback leaves the rest of its events for the next call (README, Errors), which runs
--- them first, then its own: the next call's log is a part of the old call's sequence
--- followed by a sequence of its own. Where one ends is not always known (a pair that
--- changed during the old call may or may not be in its rest), so every split is tried,
--- and every call an error stopped that fits is kept as a possible state for the next one.
+-- The events of a collisions() call against the model. A call an error stopped in a callback
+-- leaves the rest of its events for the next call (docs/space.md, Errors), which runs them
+-- first, then its own: the next call's log is a part of the old call's sequence followed by a
+-- sequence of its own. Where one ends is not always known (a pair that changed during the old
+-- call may or may not be in its rest), so every split is tried, and every call an error stopped
+-- that fits is kept as a possible state for the next one.
 function P:checkEvents(what, ctx, outcome, seg)
   local evs, m = ctx.log, #ctx.log
   local hyps = #self.pends > 0 and self.pends or { false }
@@ -1953,12 +1957,13 @@ function Q.collisions(self)
   local what = 'collisions(' .. how .. ')'
   self:log(what)
   if self.collCtx[#self.collCtx] then -- (a collisions() from inside another one of the same
-    -- space: the README says it is an error, raised at the calling line, that changes nothing)
+    -- space: docs/space.md, "Your code inside a call", says it is an error, raised at the
+    -- calling line, that changes nothing)
     self:count('collisions inside collisions')
     local ok, err = pcall(self.space.collisions, self.space, out)
     if ok or type(err) ~= 'string' or not err:find('strike.Space:collisions: called from the pair filter or an'
       .. ' event callback of the same space\'s collisions()', 1, true) then
-      self:fail('%s from inside collisions(): expected the error the README promises, got %s', what,
+      self:fail('%s from inside collisions(): expected the error docs/space.md promises, got %s', what,
         ok and 'no error' or tostring(err))
     end
     return
@@ -1996,7 +2001,8 @@ function Q.collisions(self)
 end
 
 -- collisions()' list: every solid pair the model has, in pair order, none of a body removed
--- during the call (README: the list is compacted after the events).
+-- during the call (docs/space.md, "Your code inside a call": a body removed during a call never
+-- appears in its results; the list is compacted after the events).
 function P:checkList(what, f, seg, got, n, out)
   self:listEnd(what, got, n, out)
   local cur, curKey = seg.cur, seg.byKey
@@ -2199,21 +2205,21 @@ end
 
 -- Where the first leg of a move stops before body b, which S.weep meets at t with normal
 -- (nx, ny): half a skin short of the touch along the normal, taken back along the leg, never
--- before its start (README, "The stop and the skin"); returns that fraction of the leg.
+-- before its start (docs/moving.md, "The stop and the skin"); returns that fraction of the leg.
 local function stopAt(pre, t, nx, ny)
   local dn = -(pre.dx * nx + pre.dy * ny)
   if dn > 0 then t = t - pre.skin * 0.5 / dn end
   return t > 0 and t or 0
 end
 
--- An exact fit (README, "Moving bodies", Exact fits): a leg that meets a body only because at
--- its stop there the moving body's box overlaps that body's box across by at most the skin
--- goes on from the stop, shifted across by the overlap (at most the skin), and that body is
--- not reported. Then the first collision reported is on the next leg: its t is a fraction of
--- that leg. May the first collision c1 (with o, which S.weep meets at t) come after such
--- fits? Every body S.weep meets before o must be one the box overlaps across by at most the
--- skin at the stop before it, o too when c1 is not at its S.weep time, and c1's stop must be
--- where the first leg would stop before o, give or take the shifts.
+-- An exact fit (docs/moving.md, "Moving bodies in a space", Exact fits): a leg that meets a
+-- body only because at its stop there the moving body's box overlaps that body's box across by
+-- at most the skin goes on from the stop, shifted across by the overlap (at most the skin), and
+-- that body is not reported. Then the first collision reported is on the next leg: its t is a
+-- fraction of that leg. May the first collision c1 (with o, which S.weep meets at t) come after
+-- such fits? Every body S.weep meets before o must be one the box overlaps across by at most
+-- the skin at the stop before it, o too when c1 is not at its S.weep time, and c1's stop must
+-- be where the first leg would stop before o, give or take the shifts.
 function P:afterFit(pre, sureHits, o, t, c1, tolT)
   local slack = 1e-9 * (self.span + abs(pre.dx) + abs(pre.dy))
   local function fits(b, tb)
@@ -2276,17 +2282,18 @@ function P:checkMove(what, plan, pre, f, ax, ay, cols, k)
     self:check(o ~= M, '%s: collision %d is with the body moved', what, i)
     reports[o] = (reports[o] or 0) + 1
     if f.removed[o] then
-      -- (README, "Moving bodies": a body the filter removes is not met after that.) A body
-      -- removed during the move was met at most once per time the move could meet it: a call
-      -- of its filter, or else of the pair filter, that returned with it still in the space.
-      -- With neither, only the responses, which run after a meeting, could remove it.
+      -- (docs/moving.md, "Moving bodies in a space": a body the filter removes is not met after
+      -- that.) A body removed during the move was met at most once per time the move could meet
+      -- it: a call of its filter, or else of the pair filter, that returned with it still in
+      -- the space. With neither, only the responses, which run after a meeting, could remove
+      -- it.
       local chances = huge
       if plan.script then
         chances = plan.fc[o] or 0
       elseif plan.pf0 and not f.pf then
         chances = plan.pfc[o] or 0
       end
-      -- (Added again since: a new body, which may or may not count for the move: README,
+      -- (Added again since: a new body, which may or may not count for the move: docs/space.md,
       -- "Your code inside a call".)
       self:check(f.added[o] or reports[o] <= chances or not self.F.strictRemoved, '%s: collision %d is with %s,'
         .. ' which was removed (during the move) before it was met', what, i, o)
@@ -2302,7 +2309,8 @@ function P:checkMove(what, plan, pre, f, ax, ay, cols, k)
     self:check(col.type == want, '%s: collision %d with %s has type %s; the filter says %s', what, i, o, col.type, want)
     if PASS[want] then
       -- (the snap, a cast of its own after the legs and the move's last collision, where it
-      -- ended, may land on a body met with a response of the game's: README, "Moving bodies")
+      -- ended, may land on a body met with a response of the game's: docs/moving.md, "Moving
+      -- bodies in a space")
       local snap = want ~= 'cross' and i == k and plan.opts and plan.opts.snap
         and plan.opts.snap > 0 and col.touchX == ax and col.touchY == ay
       self:check(not onceSeen[o] or snap, '%s: %s (%s) met twice in one move; %s', what, o, want, colsDesc())
@@ -2485,7 +2493,7 @@ function P:checkMove(what, plan, pre, f, ax, ay, cols, k)
     end
   end
   -- snap: a move that does not go up ends on walkable ground within snap below it, when
-  -- there is some (checked with a slope: the README defines walkable by it)
+  -- there is some (checked with a slope: docs/moving.md defines walkable by it)
   if snaps and not rising and plan.opts.slope and not f.any then
     local snap, c = plan.opts.snap, cos(plan.opts.slope)
     -- (the skin: of the body's radius, or for a body of none the length of its move)
@@ -2577,7 +2585,7 @@ ACTIONS.transform = function(self, s, ctx)
 end
 
 -- Move the body that the move or cast this filter serves is moving (a transform of it as a
--- whole): the README says that is an error, raised from that call (see subjectMoved).
+-- whole): docs/space.md says that is an error, raised from that call (see subjectMoved).
 ACTIONS.moveSubject = function(self, s)
   local b = s.subject
   if not b then return end
@@ -3138,12 +3146,13 @@ function P:gcCheck()
   S.triking(a, b)
   S.weep(a, 1, 0, b)
   for _ = 1, 2 do collectgarbage('collect') end
-  -- What the space's own tables hold (README, "Reused tables"; "Moving bodies": a move's
-  -- list and its records are the space's, reused by the next move): the last collision list
-  -- of each move level, space._cols[d][i], is a result still valid, and may name bodies
-  -- removed since; nothing else of the space may keep a removed body or a dropped function
-  -- alive. (The library's module scratch, reached only through upvalues of its functions,
-  -- holds at most the last shapes it processed: it is not walked.)
+  -- What the space's own tables hold (README, "Conventions", Reused tables; docs/moving.md,
+  -- "Moving bodies in a space": a move's list and its records are the space's, reused by the
+  -- next move): the last collision list of each move level, space._cols[d][i], is a result
+  -- still valid, and may name bodies removed since; nothing else of the space may keep a
+  -- removed body or a dropped function alive. (The library's module scratch, reached only
+  -- through upvalues of its functions, holds at most the last shapes it processed: it is not
+  -- walked.)
   local skip = {}
   for _, list in pairs(rawget(sp, '_cols') or {}) do skip[list] = true end
   if not self.F.errorScratchLetsGo then -- (see FEATURES.errorScratchLetsGo)

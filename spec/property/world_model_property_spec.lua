@@ -71,7 +71,7 @@ local FEATURES = {
   -- MoveFilter|Callback|Response> = false switches it off there only)
   query = true, collisions = true, remove = true, add = true, transform = true, spaceMove = true, member = true,
   set = true, setFilter = true, on = true, off = true, raise = true, badCall = true, caught = true,
-  moveSubject = true, -- (a move's or cast's filter moves the body being moved: the README's error)
+  moveSubject = true, -- (a move's or cast's filter moves the body being moved: an error, docs/space.md)
   -- changes = { transform = false, ... } and queries = { move = false, ... } switch steps off
 }
 
@@ -229,7 +229,7 @@ describe('the world against its model', function()
     want(F.events and on('raise', 'Callback'), 'collisions stopped in a callback', 'resumed events',
       'resumed deliveries')
     want(F.events and on('raise', 'PairFilter'), 'collisions stopped in the pair filter')
-    -- a filter that moves the body being moved: the README's error; moves and casts out of
+    -- a filter that moves the body being moved: docs/space.md's error; moves and casts out of
     -- the range of motion: the error naming the limit
     want(on('moveSubject', 'MoveFilter'), 'action moveSubject in move', 'subject-moved errors')
     want(on('moveSubject', 'QueryFilter'), 'action moveSubject in query')
