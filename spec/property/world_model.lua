@@ -3164,6 +3164,14 @@ function P:gcCheck()
       if type(list.hit) == 'table' then skip[list.hit] = { body = true } end
     end
   end
+  if not self.F.contactShapesLetGo then -- (see FEATURES.contactShapesLetGo)
+    for _, rec in pairs(rawget(sp, '_active') or {}) do
+      if type(rec) == 'table' then
+        skip[rec] = { _sa = true, _sb = true }
+        if type(rec._c) == 'table' then skip[rec._c] = { _spares = true } end
+      end
+    end
+  end
   local left, where = {}, {}
   for body, id in pairs(self.dropped) do
     self:check(not pathTo(self, body, nil, sp, true), 'internal: the model keeps #%d alive: %s', id,
