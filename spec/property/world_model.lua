@@ -2219,8 +2219,9 @@ end
 -- fraction of that leg. May the first collision c1 (with o, which S.weep meets at t) come after
 -- such fits? Every body S.weep meets before o must be one the box overlaps across by at most
 -- the skin at the stop before it, o too when c1 is not at its S.weep time, and c1's stop must
--- be where the first leg would stop before o, give or take the shifts.
-function P:afterFit(pre, sureHits, o, t, c1, tolT)
+-- be where the first leg would stop before o, give or take the shifts. A body removed during
+-- the move (frame f) may have been such a fit before it went.
+function P:afterFit(pre, f, sureHits, o, t, c1, tolT)
   local slack = 1e-9 * (self.span + abs(pre.dx) + abs(pre.dy))
   local function fits(b, tb)
     local h = pre.weep[b]
@@ -2238,6 +2239,14 @@ function P:afterFit(pre, sureHits, o, t, c1, tolT)
   for b, tb in pairs(sureHits) do
     if tb < t - tolT or b == o then
       if fits(b, tb) then any = true elseif b ~= o then return false end
+    end
+  end
+  -- (a body the move's filter removed during it, met on the first leg before o: the leg may
+  -- have gone on past it as an exact fit before it was removed)
+  for _, b in ipairs(pre.bodies) do
+    local h = pre.weep[b]
+    if f.removed[b] and not (f.moved[b] or f.added[b] or f.opts[b]) and h and h.t < t - tolT and fits(b, h.t) then
+      any = true
     end
   end
   if not any then return false end
@@ -2423,7 +2432,7 @@ function P:checkMove(what, plan, pre, f, ax, ay, cols, k)
       end
       local how = first and pre.mtv[first] and self:fmt(' (overlapping it %s deep at the start, moving further in)',
         pre.mtv[first].depth) or ''
-      if t and not (t <= best + tolT and abs(c1.t - t) <= tolT) and self:afterFit(pre, sureHits, o, t, c1, tolT) then
+      if t and not (t <= best + tolT and abs(c1.t - t) <= tolT) and self:afterFit(pre, f, sureHits, o, t, c1, tolT) then
         self:count('first collisions after an exact fit')
       elseif t then
         self:check(t <= best + tolT, '%s: the first collision is with %s (S.weep t = %s); S.weep meets %s first, at'
