@@ -2449,7 +2449,12 @@ function P:checkMove(what, plan, pre, f, ax, ay, cols, k)
   if next(unsureB) == nil and not (snaps and not rising) and not f.any then
     local allPass = true
     for _, b in ipairs(pre.bodies) do
-      if sureHits[b] and not PASS[self:moveResponse(plan, self:E(b))] then allPass = false end
+      -- (a solid body the move starts inside and leaves along its MTV there is no hit of the
+      -- first leg; a later leg, after a collision, may start inside it still and go further
+      -- in along its MTV then: met)
+      if (sureHits[b] or pre.mtv[b] and k > 0) and not PASS[self:moveResponse(plan, self:E(b))] then
+        allPass = false
+      end
     end
     if allPass then
       self:check(ax == plan.gx and ay == plan.gy, '%s: everything on the way is passed through (%d bodies), yet it'
