@@ -1,9 +1,9 @@
--- A body's memory (README, "Performance": memory per body). Each table a body is made of is
--- allocated once at its final size: as small as a table holding its numbers and its named
--- fields can be on the VM running (measured here on a table built in one go, the oracle),
--- never grown later, when the body is added to a space, queried or collided; and bodies of
--- one size share their local geometry (spec/shared_geometry_spec.lua). This counts bytes
--- (collectgarbage 'count' after full collections), never seconds.
+-- A body's memory (docs/performance.md, "The space, side by side": Memory, bytes a body). Each
+-- table a body is made of is allocated once at its final size: as small as a table holding its
+-- numbers and its named fields can be on the VM running (measured here on a table built in one
+-- go, the oracle), never grown later, when the body is added to a space, queried or collided;
+-- and bodies of one size share their local geometry (spec/shared_geometry_spec.lua). This
+-- counts bytes (collectgarbage 'count' after full collections), never seconds.
 local S = require('strike')
 local layout = require('strike.base.layout')
 

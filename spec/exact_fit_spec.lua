@@ -1,11 +1,12 @@
--- Exact fits (README, "Moving bodies in a space", exact fits): touching is never colliding, for
--- moves too. A move stops half a skin short of a wall, so a body sliding down the wall is that
--- much over the rim of a shaft exactly its size; the move goes on into the shaft shifted across
--- by that much, touching both sides, when nothing overlaps it there. bump.lua's spec "when
--- sliding" and its mirror images (the shaft to the left and to the right, falling and rising),
--- a box along a floor into a hole exactly its width, a circle, a capsule and a rounded
--- rectangle, at scales 1, 10, 100 and 1,000; and the boundary: a shaft narrower than the body
--- by the least amount its coordinates can tell is never entered. Hand-worked cases.
+-- Exact fits (docs/moving.md, "Moving bodies in a space", Exact fits): touching is never
+-- colliding, for moves too. A move stops half a skin short of a wall, so a body sliding down
+-- the wall is that much over the rim of a shaft exactly its size; the move goes on into the
+-- shaft shifted across by that much, touching both sides, when nothing overlaps it there.
+-- bump.lua's spec "when sliding" and its mirror images (the shaft to the left and to the right,
+-- falling and rising), a box along a floor into a hole exactly its width, a circle, a capsule
+-- and a rounded rectangle, at scales 1, 10, 100 and 1,000; and the boundary: a shaft narrower
+-- than the body by the least amount its coordinates can tell is never entered. Hand-worked
+-- cases.
 local S = require('strike')
 local expect = require('spec.helpers.expect')
 

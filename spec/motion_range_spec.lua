@@ -1,11 +1,11 @@
--- The range of motion and the skin (README, "Conventions", Motion and Sizes; "Moving bodies
--- in a space"; strike/limits.lua): a move stops half a skin short of what it meets, the skin a
--- millionth of the moving body's radius wherever it is; sweeps, casts and moves are right
--- within limits.REACH radii of the origin and refused beyond, at the caller's line, exactly at
--- the limit; the precision of a sweep is the moving body's own (a tiny body against a huge
--- one). Regression specs for the numbers of issue 20: at 1e9 a move stopped a whole unit
--- short, moves of 1e11 and more ended inside walls, tunnelled or never started, and S.weep of
--- a tiny body against a huge one answered t = 0 or missed. Hand-worked cases.
+-- The range of motion and the skin (README, "Conventions", Motion and Sizes; docs/moving.md,
+-- "Moving bodies in a space"; strike/limits.lua): a move stops half a skin short of what it
+-- meets, the skin a millionth of the moving body's radius wherever it is; sweeps, casts and
+-- moves are right within limits.REACH radii of the origin and refused beyond, at the caller's
+-- line, exactly at the limit; the precision of a sweep is the moving body's own (a tiny body
+-- against a huge one). Regression specs for the numbers of issue 20: at 1e9 a move stopped a
+-- whole unit short, moves of 1e11 and more ended inside walls, tunnelled or never started, and
+-- S.weep of a tiny body against a huge one answered t = 0 or missed. Hand-worked cases.
 local S = require('strike')
 local expect = require('spec.helpers.expect')
 local limits = require('strike.limits')

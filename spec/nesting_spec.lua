@@ -1,7 +1,7 @@
--- Colliders nested to any depth (README, "Colliders"): every walk over the tree is a loop
--- with a stack of its own, so a chain of colliders 20,000 deep (LuaJIT's C stack overflowed
--- at 5,000 when the walks recursed) answers every call, on every VM, as the same leaves
--- held by one flat collider do.
+-- Colliders nested to any depth (docs/shapes.md, "Colliders: S.trikers"): every walk over the
+-- tree is a loop with a stack of its own, so a chain of colliders 20,000 deep (LuaJIT's C stack
+-- overflowed at 5,000 when the walks recursed) answers every call, on every VM, as the same
+-- leaves held by one flat collider do.
 local S = require('strike')
 local expect = require('spec.helpers.expect')
 local H, T = S.hapes, S.trikers

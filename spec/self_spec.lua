@@ -339,7 +339,8 @@ describe("a method called with '.' instead of ':'", function()
   end)
 
   it("still accepts the selves strike itself passes", function()
-    -- a collider whose constructor makes no list of children before its first add (README)
+    -- a collider whose constructor makes no list of children before its first add
+    -- (docs/extending.md)
     local Bare = T.Collider:extend()
     function Bare:new(x) self:add(H.Circle(x, 0, 1)) end
     local bare = Bare(3)

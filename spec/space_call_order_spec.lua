@@ -682,10 +682,11 @@ describe('S.pace call order', function()
       assert.equals(0, sp._depth) -- (white box: every level free)
     end)
     it('a move that starts inside a body meets it when it goes further in by more than the rule, not at it', function()
-      -- (README, "Moving bodies": more than space.INTO of its length plus 2^-48 of the largest
-      -- coordinate of the box it sweeps.) A 2 x 2 box at the origin, 0.5 into a wall on its
-      -- right (the push out of it along x exactly); a move of 10 along y, and dx into the wall:
-      -- its length is 10 exactly (dx^2 is lost beside 100), the box it sweeps reaches y = 11
+      -- (docs/moving.md, "Moving bodies in a space": more than space.INTO of its length plus
+      -- 2^-48 of the largest coordinate of the box it sweeps.) A 2 x 2 box at the origin, 0.5
+      -- into a wall on its right (the push out of it along x exactly); a move of 10 along y,
+      -- and dx into the wall: its length is 10 exactly (dx^2 is lost beside 100), the box it
+      -- sweeps reaches y = 11
       local function moveBy(dx)
         local sp = S.pace()
         local wall = sp:add(T.Rectangle(5.5, 0, 10, 100))
@@ -787,7 +788,8 @@ describe('S.pace call order', function()
     end)
 
     it('the snap lands on a body the move met with a response of the game\'s, and never passes it', function()
-      -- (README, "Moving bodies": the legs meet such a body once; the snap is a cast of its own)
+      -- (docs/moving.md, "Moving bodies in a space": the legs meet such a body once; the snap
+      -- is a cast of its own)
       local sp = S.pace()
       sp:addResponse('passer', function(_, col, _, _, gx, gy) return col.touchX, col.touchY, gx, gy end)
       sp:addResponse('stopper', function(_, col) return col.touchX, col.touchY, col.touchX, col.touchY end)

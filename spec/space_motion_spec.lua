@@ -11,8 +11,8 @@ local H, T = S.hapes, S.trikers
 local rad = math.rad
 local unpack = table.unpack or unpack -- luacheck: ignore 113 143
 
--- The gap a stop leaves (README, "Moving bodies"): half the skin, Space.SKIN times the body's
--- radius.
+-- The gap a stop leaves (docs/moving.md, "Moving bodies in a space", The stop and the skin):
+-- half the skin, Space.SKIN times the body's radius.
 local function skin(body) return S.pace().SKIN * body:getRadius() / 2 end
 
 describe('S.pace motion', function()

@@ -1,7 +1,7 @@
--- Property spec for the range of motion and the skin (README, "Moving bodies in a space": the
--- stop, exact fits; limits.lua: the range): seeded random worlds at random scales (1e-3 to
--- 1e3) and random offsets from the origin (up to 3e6 scales away, within the range), with
--- random moves through them. Checked with S.triking alone, independently of the move code:
+-- Property spec for the range of motion and the skin (docs/moving.md, "Moving bodies in a
+-- space": the stop, exact fits; limits.lua: the range): seeded random worlds at random scales
+-- (1e-3 to 1e3) and random offsets from the origin (up to 3e6 scales away, within the range),
+-- with random moves through them. Checked with S.triking alone, independently of the move code:
 --  * a move ('slide', the default) never ends overlapping a body it started clear of;
 --  * a stop ('touch') is within the skin: the body is apart from what it met, and S.eparation
 --    finds it no farther from it than the skin (SKIN times its radius) along the normal allows

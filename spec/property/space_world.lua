@@ -295,8 +295,8 @@ function W:set(body, opts)
   self:note('set %s %s', self:describe(body), showOpts(opts))
 end
 
---- Who can collide, from the model (Box2D's rule; README of issue 11): a shared non-zero
---- group decides alone, else each layer must be in the other's mask.
+--- Who can collide, from the model (Box2D's rule; docs/space.md, "Who collides"): a shared
+--- non-zero group decides alone, else each layer must be in the other's mask.
 function W.ruleAllows(ea, eb)
   if ea.group ~= 0 and ea.group == eb.group then return ea.group > 0 end
   return (not ea.mask or ea.mask[eb.layer] == true) and (not eb.mask or eb.mask[ea.layer] == true)

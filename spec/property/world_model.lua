@@ -9,68 +9,69 @@
 ---  * answers computed from the per-body API only: S.triking (pairs, check, queryShape, and
 ---    queryRect against a Rectangle built here), containsPoint, body:rayCast, S.weep (cast,
 ---    and what a move may meet on its first leg), S.ite (the contact counts), and the pair rule
----    (layers, masks, groups, then the pair filter) as the README words it.
+---    (layers, masks, groups, then the pair filter) as docs/space.md words it ("Who collides").
 ---
---- Filters, pair filters, move filters, responses and event callbacks are small "scripts":
---- a pure answer computed from the body's id (so the model knows it), plus actions run on
---- chosen calls: a nested query checked against the model on the spot, add, remove, move
---- (a transform or a nested space:move) other bodies, change members, set options, on/off
---- (of itself, of later callbacks), setFilter, a bad call caught by pcall, a nested query
---- whose own filter raises (caught), moving the body that the move or cast it filters is
---- moving, and raising an error that the program's pcall around the outer call catches.
---- Every change a script makes is recorded in the frames of the calls in progress: a body
---- removed, added, moved or given other options during a call is "unsure" for that call
---- (README, "Your code inside a call": bodies added or moved during the call "may or may
---- not count for it"), except that a body removed during a call never appears in its
---- results. Every later call is checked against the model as usual: after an error, the
---- space must agree with the model.
+--- Filters, pair filters, move filters, responses and event callbacks are small "scripts": a
+--- pure answer computed from the body's id (so the model knows it), plus actions run on chosen
+--- calls: a nested query checked against the model on the spot, add, remove, move (a transform
+--- or a nested space:move) other bodies, change members, set options, on/off (of itself, of
+--- later callbacks), setFilter, a bad call caught by pcall, a nested query whose own filter
+--- raises (caught), moving the body that the move or cast it filters is moving, and raising an
+--- error that the program's pcall around the outer call catches. Every change a script makes is
+--- recorded in the frames of the calls in progress: a body removed, added, moved or given other
+--- options during a call is "unsure" for that call (docs/space.md, "Your code inside a call":
+--- bodies added or moved during the call "may or may not count for it"), except that a body
+--- removed during a call never appears in its results. Every later call is checked against the
+--- model as usual: after an error, the space must agree with the model.
 ---
---- The README's rules this model checks, beyond the answers of each query:
----  * events (README, "Events"; "Your code inside a call", Errors): each collisions() call's
----    events are its ends, in pair order, then its begins and stays, in pair order; a pair
----    begins once, stays and ends only after it began, and ends once, when it left the list
----    (or a body went); a begin or stay names two bodies in the space (a pair whose body was
----    removed before its turn gets no further event in that call: it ends at the next call if
----    it began). The recorder (the first callback of every event, never raising) logs the
----    events; every game callback registered when an event starts gets it, in registration
----    order, once (one registered later gets the next events; one removed with off never
----    again). An error in a callback stops the events: the next collisions() first gives the
----    event in progress to the callbacks after the one that raised, then runs the events left,
----    then its own (checkEvents: the log of a call is the rest of the stopped call followed by
----    its own, every split tried); an error in the pair filter forgets that call's pairs: no
----    event of its own, and the next call starts from the last one that finished;
+--- The documented rules this model checks (docs/space.md, docs/moving.md), beyond the answers
+--- of each query:
+---  * events (docs/space.md, "Sensors and events", Events; "Your code inside a call", Errors):
+---    each collisions() call's events are its ends, in pair order, then its begins and stays,
+---    in pair order; a pair begins once, stays and ends only after it began, and ends once,
+---    when it left the list (or a body went); a begin or stay names two bodies in the space (a
+---    pair whose body was removed before its turn gets no further event in that call: it ends
+---    at the next call if it began). The recorder (the first callback of every event, never
+---    raising) logs the events; every game callback registered when an event starts gets it, in
+---    registration order, once (one registered later gets the next events; one removed with off
+---    never again). An error in a callback stops the events: the next collisions() first gives
+---    the event in progress to the callbacks after the one that raised, then runs the events
+---    left, then its own (checkEvents: the log of a call is the rest of the stopped call
+---    followed by its own, every split tried); an error in the pair filter forgets that call's
+---    pairs: no event of its own, and the next call starts from the last one that finished;
 ---  * collisions()' list: compacted after the events, it names no body removed during the
 ---    call; collisions() from inside collisions() is an error that changes nothing;
----  * a filter that moves the body being moved by move or cast (a transform of that body as
----    a whole) makes the call raise the README's error; a move or cast whose centroid, at the
----    start or at the goal, is beyond REACH - 1 sizes of the origin raises the error naming
----    the limit, and nothing moves and no game code runs (some are made on purpose, on the
----    edge of the range and beyond);
----  * at the end of each program, the space's own tables keep no removed body and no
----    function it no longer uses alive, but the last collision list of each move level
----    (space._cols[d][i], the README's move results, reused by the next move); the library's
----    module scratch, reached through its functions' upvalues, is not walked.
+---  * a filter that moves the body being moved by move or cast (a transform of that body as a
+---    whole) makes the call raise the error docs/space.md promises; a move or cast whose
+---    centroid, at the start or at the goal, is beyond REACH - 1 sizes of the origin raises the
+---    error naming the limit, and nothing moves and no game code runs (some are made on
+---    purpose, on the edge of the range and beyond);
+---  * at the end of each program, the space's own tables keep no removed body and no function
+---    it no longer uses alive, but the last collision list of each move level
+---    (space._cols[d][i], a move's results, which docs/moving.md says the next move reuses);
+---    the library's module scratch, reached through its functions' upvalues, is not walked.
 ---
---- What the README leaves open, and what this model assumes there (also marked ASSUMED below):
+--- What the docs leave open, and what this model assumes there (also marked ASSUMED below):
 ---  * a change to the body a query asks about (check, queryShape), from its own filter: only
 ---    no crash; a change of a member of the body a cast or move is moving (not the body as a
 ---    whole): the error or an answer; the body a move is moving is never touched by its
 ---    responses;
----  * a body met by a move, then removed during it, may be in the move's list (README,
----    "Moving bodies": a body the filter removes "is not met after that"): at most once per
----    time the move could meet it (a call of its filter, or else of the pair filter, that
----    returned with it still in the space);
+---  * a body met by a move, then removed during it, may be in the move's list (docs/moving.md,
+---    "Moving bodies in a space": a body the filter removes "is not met after that"): at most
+---    once per time the move could meet it (a call of its filter, or else of the pair filter,
+---    that returned with it still in the space);
 ---  * a move: the first collision is the earliest S.weep hit along the first leg among the
 ---    bodies it may meet (a body overlapping at the start counts at t = 0 when the move goes
 ---    further in; a chain in the overlap, or a move along it, may go either way), or one after
----    exact fits past the bodies met before it (README, Exact fits; see afterFit); it ends
----    clear of every solid body it started clear of (chains, one-sided, aside; a depth within
----    round-off aside); it never rests exactly touching a solid body it met (but where a leg
----    starts touching); with nothing solid on the line it ends at its goal, every body crossed
----    reported once; with snap and a slope (the README defines walkable by the slope), a move
----    that does not go up ends on walkable ground within snap, when there is some; and it is
----    never stuck meeting bodies at t = 0 leg after leg without moving (the issue: a cap on a
----    move's legs never leaves a body short of where its responses take it).
+---    exact fits past the bodies met before it (docs/moving.md, Exact fits; see afterFit); it
+---    ends clear of every solid body it started clear of (chains, one-sided, aside; a depth
+---    within round-off aside); it never rests exactly touching a solid body it met (but where a
+---    leg starts touching); with nothing solid on the line it ends at its goal, every body
+---    crossed reported once; with snap and a slope (docs/moving.md, "Characters: slopes,
+---    snapping, steps", defines walkable by the slope), a move that does not go up ends on
+---    walkable ground within snap, when there is some; and it is never stuck meeting bodies at
+---    t = 0 leg after leg without moving (the issue: a cap on a move's legs never leaves a body
+---    short of where its responses take it).
 local S = require 'strike'
 local PRNG = require('spec.helpers.prng')
 local World = require('spec.property.space_world')
@@ -141,6 +142,8 @@ function WM.new(seed, index, F, stats)
   setmetatable(w.info, { __mode = 'k' }) -- (the model must not keep a dropped body alive)
   self.w, self.space, self.rng, self.F, self.stats = w, w.space, rng, F, stats
   self.seed, self.index = seed, index
+  -- (what the program leans toward, by the bits of its index: see LEAN_WEIGHTS)
+  self.lean = { events = index % 2 == 1, pair = floor(index / 2) % 2 == 1, moves = floor(index / 4) % 2 == 1 }
   self.span = w.s + abs(w.cx) + abs(w.cy)
   self.hist, self.nhist = {}, 0
   self.stepNo = 0
@@ -150,6 +153,7 @@ function WM.new(seed, index, F, stats)
   self.moving = {}              -- bodies a move in progress is moving -> count
   self.movePlans = {}           -- the moves in progress (their plans)
   self.probes = {}              -- bodies a query in progress asks about -> count
+  self.casting = {}             -- bodies a cast in progress is moving -> count
   self.cbs = { begin = {}, stay = {}, ['end'] = {} } -- registrations, in order (the recorder first)
   self.open = {}                -- pair key -> { a, b }: begun and not ended (the events seen)
   self.evSerial = 0             -- events so far (the recorder's calls): the stream's serials
@@ -165,15 +169,25 @@ function WM.new(seed, index, F, stats)
   self.rootOf = setmetatable({}, { __mode = 'kv' }) -- a member probe -> its body
   self.nscript, self.nboom, self.nreg = 0, 0, 0
   self.serials = { collisions = 0, move = 0 } -- (calls so far, any depth)
+  self.seen = {}                -- the stats counted in this program
   self.budget = BUDGET
   w.fail = function(fmt, ...) self:fail(fmt, ...) end
   w.note = function(_, fmt, ...) self:log(fmt, ...) end
   return self
 end
 
+-- Count v (default 1) of k in the run's stats; stats.present[k] counts the programs in which k
+-- happened at least once (the spec's coverage checks read those).
 function P:count(k, v)
   local st = self.stats
-  st[k] = (st[k] or 0) + (v or 1)
+  v = v or 1
+  st[k] = (st[k] or 0) + v
+  if v > 0 and not self.seen[k] then
+    self.seen[k] = true
+    local present = st.present or {}
+    st.present = present
+    present[k] = (present[k] or 0) + 1
+  end
 end
 
 function P:D(b) return self.w:describe(b) end
@@ -239,7 +253,7 @@ function P:rank(b)
   return i and i.rank
 end
 
--- The pair rule of the README ("Who collides"): a shared non-zero group decides alone, else
+-- The pair rule of docs/space.md ("Who collides"): a shared non-zero group decides alone, else
 -- each layer must be in the other's mask; then the pair filter, asked with a added before b.
 function P:allowed(ea, eb)
   if ea.rank > eb.rank then ea, eb = eb, ea end
@@ -283,7 +297,7 @@ end
 -- A call in progress: the bodies removed, added, moved (transformed, members changed, moved
 -- by space:move) and given options during it, and whether the pair filter changed;
 -- `transformed`: the bodies moved as a whole (a transform of the body itself, or a
--- space:move of it), which the README forbids for the body a move or cast is moving.
+-- space:move of it), which docs/space.md forbids for the body a move or cast is moving.
 function P:push(kind)
   local f = { kind = kind, removed = {}, added = {}, moved = {}, opts = {}, transformed = {}, pf = false, any = false,
     gone = {} } -- (gone: a body removed -> its entry then)
@@ -314,23 +328,23 @@ function P:effectPf()
   end
 end
 
--- Is body b unsure for the call of frame f: moved, added or given options during it (the
--- README: "bodies added or moved during the call may or may not count for it"), or removed
--- without FEATURES.strictRemoved.
+-- Is body b unsure for the call of frame f: moved, added or given options during it
+-- (docs/space.md, "Your code inside a call": "bodies added or moved during the call may or may
+-- not count for it"), or removed without FEATURES.strictRemoved.
 function P:unsure(f, b)
   return f.moved[b] or f.added[b] or f.opts[b] or (f.removed[b] and not self.F.strictRemoved)
 end
 
 -- Was body b removed during the call of frame f (and is not back)? Then it is in none of the
--- call's results (README: "A body removed during a call never appears in that call's
--- results, even when it was found before it was removed"; for collisions(), the list is
--- compacted after the events).
+-- call's results (docs/space.md, "Your code inside a call": "A body removed during a call never
+-- appears in that call's results, even when it was found before it was removed"; for
+-- collisions(), the list is compacted after the events).
 function P:gone(f, b)
   return f.removed[b] and not self:E(b) and self.F.strictRemoved
 end
 
 -- Did the body a query asks about (or, for a member, its body) change during the call? Then
--- anything goes for its answer (ASSUMED: the README says nothing of it).
+-- anything goes for its answer (ASSUMED: the docs say nothing of it).
 function P:probeChanged(f, q)
   local root = self.rootOf[q]
   return f.moved[q] or f.removed[q] or f.added[q] or f.opts[q] or root and (f.moved[root] or f.removed[root]
@@ -375,7 +389,7 @@ end
 ---------------------------------------------------------------------------------------
 -- What strike gave back must stay as it was: a new table (no out) for good, collisions()'
 -- records until the next collisions(), a move's list until the next move (README,
--- "Conventions": reused tables; "The space"; "Moving bodies")
+-- "Conventions", Reused tables; docs/moving.md, "The collisions list is the space's")
 
 local KEPT_FIELDS = { 'a', 'b', 'body', 'distance', 'other', 'type', 't', 'touchX', 'touchY' }
 
@@ -434,6 +448,50 @@ local ACTION_ORDER = { 'query', 'collisions', 'remove', 'add', 'transform', 'spa
   'on', 'off', 'raise', 'badCall', 'caught', 'moveSubject' }
 WM.ACTIONS = ACTION_ORDER
 
+-- Leans. The random mix reaches some chains in few programs: an error in a callback with
+-- others after it on the same event (the next collisions() gives them the event), the pair
+-- filter raising, removing a body or calling collisions(), a filter moving the body being
+-- moved, a snapped move over walkable ground, a call out of the range of motion. Each program
+-- leans toward some of three areas, by the bits of its index, so that each lean is in half
+-- the programs of any run (and the spec's coverage checks hold for any seed):
+--  * events: callbacks from the start, the first raising, with one or two after it on its
+--    event; callbacks' scripts act more often, and more often remove, raise, call
+--    collisions() and off (LEAN_WEIGHTS), and half of them also remove, catch an error,
+--    change a member or call on (LEAN_ACTIONS);
+--  * pair: a pair filter from the start that raises, removes or calls collisions(); pair
+--    filters' scripts act more often, more often remove and call collisions(), and half of
+--    them also raise, remove or call collisions();
+--  * moves: a floor and a walker on it, walked along with snap and a slope (addWalker);
+--    move options, snap and slope more often, a move with snap not going up; calls out of
+--    the range of motion more often; the filters of moves and casts act more often and move
+--    the body being moved more often, and half of the move filters also move it, remove,
+--    catch an error or change a member; addResponse more often.
+-- A lean only weighs: every operation stays possible, and a feature switched off stays off.
+local LEAN_WEIGHTS = {
+  event = { remove = 3, raise = 3, collisions = 2, off = 4 },
+  pair = { remove = 4, collisions = 3 },
+  move = { moveSubject = 3 },
+  query = { moveSubject = 6 }, -- (a cast's filter, which has a subject)
+}
+
+-- What half the scripts of a kind the program leans toward do, besides their random actions
+-- (one of these; the events lean has its raising callback instead: see run).
+local LEAN_ACTIONS = {
+  event = { 'remove', 'caught', 'member', 'on' },
+  pair = { 'raise', 'remove', 'collisions' },
+  move = { 'moveSubject', 'remove', 'caught', 'member' },
+  query = { 'moveSubject' },
+}
+
+-- Does the program lean toward the scripts of this kind (`subject`: of a move or cast)?
+function P:leaning(kind, subject)
+  local lean = self.lean
+  if kind == 'event' then return lean.events end
+  if kind == 'pair' then return lean.pair end
+  if kind == 'move' or kind == 'query' and subject then return lean.moves end
+  return false
+end
+
 function P:feature(op, kind)
   local F = self.F
   if not F[op] then return false end
@@ -454,6 +512,8 @@ function P:pickAction(kind, s)
     if op == 'spaceMove' and kind == 'move' then wgt = 2 end
     if op == 'raise' and kind == 'event' then wgt = 2 end
     if op == 'raise' and kind == 'pair' then wgt = 5 end
+    local lw = self:leaning(kind, s.subject) and LEAN_WEIGHTS[kind][op]
+    if lw and wgt > 0 then wgt = lw end
     if wgt > 0 and self:feature(op, kind) then
       total = total + wgt
       list[#list + 1] = { op, total }
@@ -485,7 +545,8 @@ function P:newScript(kind, pure, subject)
     end
     s.resps = list
   end
-  if not pure and self.sdepth < MAXD and self.F.scripts and rng:next() < 0.6 then
+  local lean = not pure and self:leaning(kind, subject)
+  if not pure and self.sdepth < MAXD and self.F.scripts and rng:next() < (lean and 0.85 or 0.6) then
     for _ = 1, rng:int(1, 2) do
       local op = self:pickAction(kind, s)
       if op then
@@ -493,7 +554,25 @@ function P:newScript(kind, pure, subject)
       end
     end
   end
+  if lean and LEAN_ACTIONS[kind] and rng:next() < 0.5 then self:leanAction(s, LEAN_ACTIONS[kind]) end
   return s
+end
+
+-- Add to script s one of the actions `ops` that the features allow (none when scripts run
+-- too deep already), on one of its first calls or on every k-th.
+function P:leanAction(s, ops)
+  if not self.F.scripts or self.sdepth >= MAXD then return end
+  local list = {}
+  for _, op in ipairs(ops) do
+    if self:feature(op, s.kind) and (op ~= 'moveSubject' or s.subject) and (op ~= 'on' and op ~= 'off' or self.events)
+    then
+      list[#list + 1] = op
+    end
+  end
+  if #list == 0 then return end
+  local rng = self.rng
+  local op = list[rng:int(1, #list)]
+  s.actions[#s.actions + 1] = { op = op, at = rng:int(1, 3), every = rng:next() < 0.4 and rng:int(2, 6) or nil }
 end
 
 function P:describeScript(s)
@@ -620,11 +699,12 @@ end
 
 -- The event being delivered in the collisions() call ctx: { ev = the recorder's entry, rest =
 -- the game's callbacks registered for its kind when it started, in order, pos = the next one
--- due }. The README ("Events"): callbacks run in the order they were registered; one
--- registered while the events run gets them from the next event on; one removed with off is
--- never called after off returns. ("Your code inside a call", Errors): an error in a callback
--- stops the events there, and the next collisions() runs the rest first -- the callbacks of
--- that event not yet called, then the events left -- so each callback sees every event once.
+-- due }. docs/space.md ("Sensors and events", Events): callbacks run in the order they were
+-- registered; one registered while the events run gets them from the next event on; one removed
+-- with off is never called after off returns. ("Your code inside a call", Errors): an error in
+-- a callback stops the events there, and the next collisions() runs the rest first -- the
+-- callbacks of that event not yet called, then the events left -- so each callback sees every
+-- event once.
 function P:finishEvent(ctx)
   local cur = ctx.cur
   if not cur then return end
@@ -658,8 +738,9 @@ function P:recorderFn(E)
     self:check(ev.ra == a and ev.rb == b, 'collisions(): event %d, %s %s-%s: the record holds %s-%s', i, E, a, b, ev.ra,
       ev.rb)
     if E ~= 'end' then
-      -- (README, Errors: a pair whose body was removed during the events gets no further
-      -- event in that call; a body removed and added again is a new body)
+      -- (docs/space.md, "Your code inside a call", Errors: a pair whose body was removed
+      -- during the events gets no further event in that call; "Sensors and events": a body
+      -- removed and added again is a new body)
       local ea, eb = self:E(a), self:E(b)
       self:check(ea and eb, 'collisions(): event %d, %s %s-%s: a body removed from the space before the event', i,
         E, a, b)
@@ -845,7 +926,8 @@ function P:geometryChange(X)
     end, desc = 'Collider:add to', tx = cx, ty = cy, what = 'memberAdd' }
   elseif MUTABLE[kind] and r < 0.34 then
     local count = select('#', X:unpack())
-    if count > 1 then
+    -- (of the body a cast is moving: see FEATURES.memberRemovedFromCast)
+    if count > 1 and (self.F.memberRemovedFromCast or not self.casting[X]) then
       local i = rng:int(1, count)
       local cx, cy = X:getCentroid()
       local first = true
@@ -1448,25 +1530,25 @@ function P:rangeError(what, fname, f, r, body, x, y, s, approx)
   self:log('(out of the range of motion: the error)')
 end
 
--- After a cast or move of `body` (its frame f; pcall's results r): the README ("Your code
+-- After a cast or move of `body` (its frame f; pcall's results r): docs/space.md ("Your code
 -- inside a call"): moving the body that move or cast is moving, from a filter, is an error,
 -- raised from the call. A transform of the body as a whole (see push) must raise it; a change
--- of one of its members, or of the body it is a member of, may (the README leaves it open).
+-- of one of its members, or of the body it is a member of, may (the docs leave it open).
 -- Returns true when the call raised it; raises the call's other errors.
 function P:subjectMoved(what, fname, f, r, body)
   local root = self.rootOf[body]
   local must = (f.transformed[body] or root and f.transformed[root]) and World.firstLeaf(body) ~= nil
   local may = must or f.moved[body] or f.transformed[body] or root and (f.moved[root] or f.transformed[root])
   if r[1] then
-    self:check(not must, '%s: a filter moved the body being moved as a whole, and the call raised no error (README:'
-      .. ' an error)', what)
+    self:check(not must, '%s: a filter moved the body being moved as a whole, and the call raised no error'
+      .. ' (docs/space.md: an error)', what)
     return false
   end
   local e = r[2]
   if isFailure(e) or isBoom(e) then error(e, 0) end
   if not (may and type(e) == 'string' and e:find(fname .. ': a filter moved the body being moved', 1, true)) then
-    self:fail('%s raised %s%s', what, tostring(e), must and ' (a filter moved the body being moved: the README promises'
-      .. ' the error "' .. fname .. ': a filter moved the body being moved")' or '')
+    self:fail('%s raised %s%s', what, tostring(e), must and ' (a filter moved the body being moved: docs/space.md'
+      .. ' promises the error "' .. fname .. ': a filter moved the body being moved")' or '')
   end
   self:count('subject-moved errors')
   self:log('(the error: a filter moved the body being moved)')
@@ -1506,7 +1588,8 @@ function Q.cast(self, target, X)
     dx, dy = d * cos(a), d * sin(a)
   end
   if rng:next() < 0.02 then dx, dy = 0, 0 end -- (a cast that does not move: what it overlaps)
-  if rng:next() < 0.03 and body:getRadius() > 0 then -- (to the edge of the range of motion, or beyond)
+  -- (to the edge of the range of motion, or beyond)
+  if rng:next() < (self.lean.moves and 0.08 or 0.03) and body:getRadius() > 0 then
     if rng:next() < 0.5 then dx = self:rangeEdge(body, dx) - cx else dy = self:rangeEdge(body, dy) - cy end
   end
   local oor = self:outOfRange(body, cx, cy, cx + dx, cy + dy)
@@ -1514,8 +1597,10 @@ function Q.cast(self, target, X)
   local out, ohow = self:outFor('cast')
   local what = self:fmt('cast(%s %s, %s, %s, %s, %s)', how, body, dx, dy, qf.desc, ohow)
   self:log(what)
+  self.casting[body] = (self.casting[body] or 0) + 1
   local f, res = self:probing(body, self.attempt, self, 'cast', self.space.cast, self.space, body, dx, dy, qf.filter,
     out)
+  self.casting[body] = self.casting[body] > 1 and self.casting[body] - 1 or nil
   self:release(qf)
   if oor then return self:rangeError(what, 'strike.Space:cast', f, res, body, cx, cy, qf.script) end
   if self:subjectMoved(what, 'strike.Space:cast', f, res, body) then return end
@@ -1628,19 +1713,36 @@ end
 -- A collisions() call's own pairs as the model sees them when it returns: `cur`, the pairs
 -- touching then (byKey: by pair key), `f`, its frame (what changed during it); `oStart`, the
 -- serial of the last event before its own events (those before are the rest of the call an
--- error stopped).
+-- error stopped); `memo`, the pairs of each body removed during the call, as they are when it
+-- returns (see inList: read when the rest of a call an error stopped runs, calls later, when
+-- the other body or the pair filter may have changed since).
 function P:segment(f)
   local cur = self:touching()
   local byKey = {}
   for _, p in ipairs(cur) do byKey[p.key] = p end
-  return { f = f, cur = cur, byKey = byKey, oStart = 0 }
+  local memo, gone = {}, {}
+  for b, e in pairs(f.gone) do
+    if not self:E(b) then gone[#gone + 1] = e end
+  end
+  for i, ea in ipairs(gone) do
+    for _, eb in ipairs(self.w.entries) do
+      local x, y = ea, eb
+      if x.rank > y.rank then x, y = y, x end
+      memo[x.rank * K + y.rank] = self:allowed(x, y) and S.triking(x.body, y.body) and 'yes' or 'no'
+    end
+    for j = i + 1, #gone do
+      local eb = gone[j]
+      memo[ea.rank * K + eb.rank] = self:allowed(ea, eb) and S.triking(ea.body, eb.body) and 'yes' or 'no'
+    end
+  end
+  return { f = f, cur = cur, byKey = byKey, oStart = 0, memo = memo }
 end
 
--- Is the pair `key` (of bodies a, b) in the list the call of segment seg made: 'yes', 'no',
--- or 'maybe' (a body changed during the call: README, "bodies added or moved during the
--- call may or may not count for it"). A body removed before the call's own events (before
--- it, by an event of the call before, by the pair filter) is in none of its pairs; one
--- removed during them, and not changed otherwise, is in the pairs it had.
+-- Is the pair `key` (of bodies a, b) in the list the call of segment seg made: 'yes', 'no', or
+-- 'maybe' (a body changed during the call: docs/space.md, "bodies added or moved during the
+-- call may or may not count for it"). A body removed before the call's own events (before it,
+-- by an event of the call before, by the pair filter) is in none of its pairs; one removed
+-- during them, and not changed otherwise, is in the pairs it had.
 function P:inList(seg, key, a, b)
   local ra, rb = floor(key / K), key % K
   local ga, gb = self.rankGone[ra], self.rankGone[rb]
@@ -1651,33 +1753,23 @@ function P:inList(seg, key, a, b)
   -- (removed during the events: the pair as it was, by the rule and S.triking)
   local ea, eb = f.gone[a] or self:E(a), f.gone[b] or self:E(b)
   if not (ea and eb and ea.rank == ra and eb.rank == rb) then return 'maybe' end
-  local memo = seg.memo
-  if not memo then
-    memo = {}
-    seg.memo = memo
-  end
-  local v = memo[key]
-  if v == nil then
-    v = self:allowed(ea, eb) and S.triking(a, b) and 'yes' or 'no'
-    memo[key] = v
-  end
-  return v
+  return seg.memo[key] or 'maybe'
 end
 
 -- What a failing interpretation of a call's events raises (see checkEvents).
 local Trial = {}
 
--- The events log[i0..i1]: one part of the sequence of events of the call of segment seg --
--- the rest of a call an error stopped, or a call's own -- going on after position ptr
--- ({sec = 0 for the ends, 1 for begin and stay; key}, or nil). README ("Events"): first
--- 'end' for every pair that touched at the previous call and no longer does, in pair
--- order, then 'begin' or 'stay' for each pair touching, in pair order; balanced against
--- `open` (updated): a pair begins once, stays and ends only after it began, ends once.
--- Pairs that surely touch have the MTV and contacts of S.triking and S.ite. With
--- `complete` (the part ran to its end; else up to its last event), every event due was
--- delivered: an end for each pair begun that surely left the list, a begin or stay for each
--- pair surely in it, unless a body of the pair was removed before its turn (`serial0`: the
--- serial before the part's first event). Returns the position of the last event.
+-- The events log[i0..i1]: one part of the sequence of events of the call of segment seg -- the
+-- rest of a call an error stopped, or a call's own -- going on after position ptr ({sec = 0 for
+-- the ends, 1 for begin and stay; key}, or nil). docs/space.md ("Sensors and events", Events):
+-- first 'end' for every pair that touched at the previous call and no longer does, in pair
+-- order, then 'begin' or 'stay' for each pair touching, in pair order; balanced against `open`
+-- (updated): a pair begins once, stays and ends only after it began, ends once. Pairs that
+-- surely touch have the MTV and contacts of S.triking and S.ite. With `complete` (the part ran
+-- to its end; else up to its last event), every event due was delivered: an end for each pair
+-- begun that surely left the list, a begin or stay for each pair surely in it, unless a body of
+-- the pair was removed before its turn (`serial0`: the serial before the part's first event).
+-- Returns the position of the last event.
 function P:validatePart(bad, seg, evs, i0, i1, ptr, open, complete, serial0)
   local sec, key = -1, -1
   if ptr then sec, key = ptr.sec, ptr.key end
@@ -1796,12 +1888,13 @@ function P:tryEvents(ctx, seg, H, s, outcome)
   end
   if not pend then
     if outcome == 'pf' then
-      -- (README, Errors: an error in the pair filter forgets that call's pairs)
+      -- (docs/space.md, "Your code inside a call", Errors: an error in the pair filter forgets
+      -- that call's pairs)
       if s < m then bad(s + 1, 'event %d (%s %s-%s): an event of a call whose pair filter raised an error', s + 1,
         evs[s + 1].event, evs[s + 1].a, evs[s + 1].b) end
     else
       if outcome == 'callback' and s == m then bad(m + 1, 'a callback raised an error, and no event was running') end
-      local own = { f = seg.f, cur = seg.cur, byKey = seg.byKey, oStart = ctx.base + s }
+      local own = { f = seg.f, cur = seg.cur, byKey = seg.byKey, oStart = ctx.base + s, memo = seg.memo }
       local at = self:validatePart(bad, own, evs, s + 1, m, nil, open, outcome == 'completed', ctx.base + s)
       if outcome == 'callback' then pend = { seg = own, ptr = at } end
     end
@@ -1809,12 +1902,12 @@ function P:tryEvents(ctx, seg, H, s, outcome)
   return { open = open, pend = pend, s = H and s or 0 }
 end
 
--- The events of a collisions() call against the model. A call an error stopped in a
--- callback leaves the rest of its events for the next call (README, Errors), which runs
--- them first, then its own: the next call's log is a part of the old call's sequence
--- followed by a sequence of its own. Where one ends is not always known (a pair that
--- changed during the old call may or may not be in its rest), so every split is tried,
--- and every call an error stopped that fits is kept as a possible state for the next one.
+-- The events of a collisions() call against the model. A call an error stopped in a callback
+-- leaves the rest of its events for the next call (docs/space.md, Errors), which runs them
+-- first, then its own: the next call's log is a part of the old call's sequence followed by a
+-- sequence of its own. Where one ends is not always known (a pair that changed during the old
+-- call may or may not be in its rest), so every split is tried, and every call an error stopped
+-- that fits is kept as a possible state for the next one.
 function P:checkEvents(what, ctx, outcome, seg)
   local evs, m = ctx.log, #ctx.log
   local hyps = #self.pends > 0 and self.pends or { false }
@@ -1837,9 +1930,20 @@ function P:checkEvents(what, ctx, outcome, seg)
     self:fail('%s: %s%s', what, best.msg, #self.pends > 0 and ' (events of the call an error stopped come first)' or '')
   end
   self.open = results[1].open
-  local pends = {}
+  -- (every distinct one, none left out: a call an error stopped in the middle of the rest of
+  -- another leaves one per split that fits; up to 5 at once, seed 3's program 359)
+  local pends, seen = {}, {}
   for _, r in ipairs(results) do
-    if r.pend and #pends < 4 then pends[#pends + 1] = r.pend end
+    local p = r.pend
+    if p then
+      local byF = seen[p.seg.f] or {}
+      seen[p.seg.f] = byF
+      local id = ('%.0f:%.0f:%.0f'):format(p.seg.oStart, p.ptr and p.ptr.sec or -1, p.ptr and p.ptr.key or -1)
+      if not byF[id] then
+        byF[id] = true
+        pends[#pends + 1] = p
+      end
+    end
   end
   self.pends = pends
   for _, ev in ipairs(evs) do self:count('events ' .. ev.event) end
@@ -1853,12 +1957,13 @@ function Q.collisions(self)
   local what = 'collisions(' .. how .. ')'
   self:log(what)
   if self.collCtx[#self.collCtx] then -- (a collisions() from inside another one of the same
-    -- space: the README says it is an error, raised at the calling line, that changes nothing)
+    -- space: docs/space.md, "Your code inside a call", says it is an error, raised at the
+    -- calling line, that changes nothing)
     self:count('collisions inside collisions')
     local ok, err = pcall(self.space.collisions, self.space, out)
     if ok or type(err) ~= 'string' or not err:find('strike.Space:collisions: called from the pair filter or an'
       .. ' event callback of the same space\'s collisions()', 1, true) then
-      self:fail('%s from inside collisions(): expected the error the README promises, got %s', what,
+      self:fail('%s from inside collisions(): expected the error docs/space.md promises, got %s', what,
         ok and 'no error' or tostring(err))
     end
     return
@@ -1896,7 +2001,8 @@ function Q.collisions(self)
 end
 
 -- collisions()' list: every solid pair the model has, in pair order, none of a body removed
--- during the call (README: the list is compacted after the events).
+-- during the call (docs/space.md, "Your code inside a call": a body removed during a call never
+-- appears in its results; the list is compacted after the events).
 function P:checkList(what, f, seg, got, n, out)
   self:listEnd(what, got, n, out)
   local cur, curKey = seg.cur, seg.byKey
@@ -1971,7 +2077,8 @@ function P:planMove(M, target)
     plan.gx, plan.gy = cx + d * cos(a), cy + d * sin(a)
     if rng:next() < 0.3 then plan.gx, plan.gy = self:aim() end
   end
-  if rng:next() < 0.015 and M:getRadius() > 0 then -- (beyond the edge of the range of motion)
+  local far = rng:next() < (self.lean.moves and 0.05 or 0.015) and M:getRadius() > 0
+  if far then -- (beyond the edge of the range of motion)
     -- (by more than a rounding: the move's checks read a copy of a body changed just before,
     -- whose radius may differ from the body's in the last place; casts test the very edge)
     local lim = (self.space.REACH - 1) * M:getRadius()
@@ -1984,16 +2091,37 @@ function P:planMove(M, target)
     plan.filter = self:moveFilterFn(plan.script, plan)
   end
   local acts = plan.script and #plan.script.actions > 0
-  if rng:next() < (acts and 0.7 or 0.45) then
+  local lean = self.lean.moves
+  if rng:next() < ((acts or lean) and 0.7 or 0.45) then
     local opts = {}
-    if rng:next() < 0.8 then opts.snap = w.s * logRange(rng, 0.05, 2) end
-    if rng:next() < (acts and 0.9 or 0.7) then opts.slope = rng:range(0.2, 1.3) end
+    if rng:next() < (lean and 0.95 or 0.8) then opts.snap = w.s * logRange(rng, 0.05, 2) end
+    if rng:next() < ((acts or lean) and 0.9 or 0.7) then opts.slope = rng:range(0.2, 1.3) end
     if rng:next() < 0.3 then
       local a = rng:range(-pi, pi)
       opts.up = { cos(a), sin(a) }
     end
     if rng:next() < 0.3 then opts.step = w.s * logRange(rng, 0.05, 1) end
     plan.opts = opts
+    if lean and opts.snap and not far then
+      -- (a move that does not go up, which the snap check needs: toward a body below the
+      -- start, where there is ground; else the goal mirrored when it is above the start)
+      local ux, uy = 0, -1
+      if opts.up then ux, uy = opts.up[1], opts.up[2] end
+      local cx, cy = M:getCentroid()
+      local E = self.w.entries
+      for _ = 1, 4 do
+        local b = #E > 0 and E[rng:int(1, #E)].body
+        if b and b ~= M and (not b.shapes or b:getShapeCount() > 0) then
+          local bx, by = b:getCentroid()
+          if (bx - cx) * ux + (by - cy) * uy < 0 then
+            plan.gx, plan.gy = bx, by
+            break
+          end
+        end
+      end
+      local d = (plan.gx - cx) * ux + (plan.gy - cy) * uy
+      if d > 0 then plan.gx, plan.gy = plan.gx - 2 * d * ux, plan.gy - 2 * d * uy end
+    end
   end
   return plan
 end
@@ -2040,6 +2168,7 @@ end
 
 function Q.move(self, target, _, sub, plan)
   local E = self.w.entries
+  if not plan and not target and self.lean.moves and self.rng:next() < 0.25 then plan = self:walkPlan() end
   if not plan then
     if #E == 0 then return end
     local M
@@ -2076,22 +2205,23 @@ end
 
 -- Where the first leg of a move stops before body b, which S.weep meets at t with normal
 -- (nx, ny): half a skin short of the touch along the normal, taken back along the leg, never
--- before its start (README, "The stop and the skin"); returns that fraction of the leg.
+-- before its start (docs/moving.md, "The stop and the skin"); returns that fraction of the leg.
 local function stopAt(pre, t, nx, ny)
   local dn = -(pre.dx * nx + pre.dy * ny)
   if dn > 0 then t = t - pre.skin * 0.5 / dn end
   return t > 0 and t or 0
 end
 
--- An exact fit (README, "Moving bodies", Exact fits): a leg that meets a body only because at
--- its stop there the moving body's box overlaps that body's box across by at most the skin
--- goes on from the stop, shifted across by the overlap (at most the skin), and that body is
--- not reported. Then the first collision reported is on the next leg: its t is a fraction of
--- that leg. May the first collision c1 (with o, which S.weep meets at t) come after such
--- fits? Every body S.weep meets before o must be one the box overlaps across by at most the
--- skin at the stop before it, o too when c1 is not at its S.weep time, and c1's stop must be
--- where the first leg would stop before o, give or take the shifts.
-function P:afterFit(pre, sureHits, o, t, c1, tolT)
+-- An exact fit (docs/moving.md, "Moving bodies in a space", Exact fits): a leg that meets a
+-- body only because at its stop there the moving body's box overlaps that body's box across by
+-- at most the skin goes on from the stop, shifted across by the overlap (at most the skin), and
+-- that body is not reported. Then the first collision reported is on the next leg: its t is a
+-- fraction of that leg. May the first collision c1 (with o, which S.weep meets at t) come after
+-- such fits? Every body S.weep meets before o must be one the box overlaps across by at most
+-- the skin at the stop before it, o too when c1 is not at its S.weep time, and c1's stop must
+-- be where the first leg would stop before o, give or take the shifts. A body removed during
+-- the move (frame f) may have been such a fit before it went.
+function P:afterFit(pre, f, sureHits, o, t, c1, tolT)
   local slack = 1e-9 * (self.span + abs(pre.dx) + abs(pre.dy))
   local function fits(b, tb)
     local h = pre.weep[b]
@@ -2109,6 +2239,14 @@ function P:afterFit(pre, sureHits, o, t, c1, tolT)
   for b, tb in pairs(sureHits) do
     if tb < t - tolT or b == o then
       if fits(b, tb) then any = true elseif b ~= o then return false end
+    end
+  end
+  -- (a body the move's filter removed during it, met on the first leg before o: the leg may
+  -- have gone on past it as an exact fit before it was removed)
+  for _, b in ipairs(pre.bodies) do
+    local h = pre.weep[b]
+    if f.removed[b] and not (f.moved[b] or f.added[b] or f.opts[b]) and h and h.t < t - tolT and fits(b, h.t) then
+      any = true
     end
   end
   if not any then return false end
@@ -2153,18 +2291,21 @@ function P:checkMove(what, plan, pre, f, ax, ay, cols, k)
     self:check(o ~= M, '%s: collision %d is with the body moved', what, i)
     reports[o] = (reports[o] or 0) + 1
     if f.removed[o] then
-      -- (README, "Moving bodies": a body the filter removes is not met after that.) A body
-      -- removed during the move was met at most once per time the move could meet it: a call
-      -- of its filter, or else of the pair filter, that returned with it still in the space.
-      -- With neither, only the responses, which run after a meeting, could remove it.
+      -- (docs/moving.md, "Moving bodies in a space": a body the filter removes is not met after
+      -- that.) A body removed during the move was met at most once per time the move could meet
+      -- it: a call of its filter, or else of the pair filter, that returned with it still in
+      -- the space. With neither, only the responses, which run after a meeting, could remove
+      -- it.
       local chances = huge
       if plan.script then
         chances = plan.fc[o] or 0
       elseif plan.pf0 and not f.pf then
         chances = plan.pfc[o] or 0
       end
-      self:check(reports[o] <= chances or not self.F.strictRemoved, '%s: collision %d is with %s, which was removed'
-        .. ' (during the move) before it was met', what, i, o)
+      -- (Added again since: a new body, which may or may not count for the move: docs/space.md,
+      -- "Your code inside a call".)
+      self:check(f.added[o] or reports[o] <= chances or not self.F.strictRemoved, '%s: collision %d is with %s,'
+        .. ' which was removed (during the move) before it was met', what, i, o)
     else
       self:check(self:E(o) ~= nil, '%s: collision %d is with %s, which is not in the space', what, i, o)
     end
@@ -2177,7 +2318,8 @@ function P:checkMove(what, plan, pre, f, ax, ay, cols, k)
     self:check(col.type == want, '%s: collision %d with %s has type %s; the filter says %s', what, i, o, col.type, want)
     if PASS[want] then
       -- (the snap, a cast of its own after the legs and the move's last collision, where it
-      -- ended, may land on a body met with a response of the game's: README, "Moving bodies")
+      -- ended, may land on a body met with a response of the game's: docs/moving.md, "Moving
+      -- bodies in a space")
       local snap = want ~= 'cross' and i == k and plan.opts and plan.opts.snap
         and plan.opts.snap > 0 and col.touchX == ax and col.touchY == ay
       self:check(not onceSeen[o] or snap, '%s: %s (%s) met twice in one move; %s', what, o, want, colsDesc())
@@ -2215,6 +2357,10 @@ function P:checkMove(what, plan, pre, f, ax, ay, cols, k)
   -- unsure: a chain in the overlap, a move along the overlap's normal)
   local tolT = self:tolT(L)
   local roundoff = 1e-10 * (self.span + L)
+  -- (docs/moving.md: a body overlapping at the start counts when the move goes further in by
+  -- more than space.INTO of its length plus the rounding of its coordinates, 2^-48 of the
+  -- largest; within twice that, either way)
+  local grain = 2 * (self.space.INTO * L + 2 ^ -48 * (self.span + self.w:side() + L))
   local best, sureHits, unsureB = huge, {}, {}
   for _, b in ipairs(pre.bodies) do
     local e = self:E(b)
@@ -2225,7 +2371,8 @@ function P:checkMove(what, plan, pre, f, ax, ay, cols, k)
       local t, sure = nil, not ch
       if m then
         local dn = (pre.dx * m.nx + pre.dy * m.ny) / L
-        if m.chain or abs(dn) <= 1e-9 or m.depth <= roundoff then -- (or touching, within round-off)
+        -- (or touching, within round-off; or going in by no more than the grain)
+        if m.chain or abs(dn) <= 1e-9 or m.depth <= roundoff or abs(dn) * L <= grain then
           t, sure = 0, false
         elseif dn > 0 then
           t = 0
@@ -2245,6 +2392,8 @@ function P:checkMove(what, plan, pre, f, ax, ay, cols, k)
       end
     end
   end
+  -- (a body added during the move, by a filter: met at any time, or not)
+  for b in pairs(f.added) do unsureB[b] = -huge end
   local snaps = plan.opts and plan.opts.snap and plan.opts.snap > 0
   local up = plan.opts and plan.opts.up
   local ux, uy = 0, -1
@@ -2283,7 +2432,7 @@ function P:checkMove(what, plan, pre, f, ax, ay, cols, k)
       end
       local how = first and pre.mtv[first] and self:fmt(' (overlapping it %s deep at the start, moving further in)',
         pre.mtv[first].depth) or ''
-      if t and not (t <= best + tolT and abs(c1.t - t) <= tolT) and self:afterFit(pre, sureHits, o, t, c1, tolT) then
+      if t and not (t <= best + tolT and abs(c1.t - t) <= tolT) and self:afterFit(pre, f, sureHits, o, t, c1, tolT) then
         self:count('first collisions after an exact fit')
       elseif t then
         self:check(t <= best + tolT, '%s: the first collision is with %s (S.weep t = %s); S.weep meets %s first, at'
@@ -2300,7 +2449,12 @@ function P:checkMove(what, plan, pre, f, ax, ay, cols, k)
   if next(unsureB) == nil and not (snaps and not rising) and not f.any then
     local allPass = true
     for _, b in ipairs(pre.bodies) do
-      if sureHits[b] and not PASS[self:moveResponse(plan, self:E(b))] then allPass = false end
+      -- (a solid body the move starts inside and leaves along its MTV there is no hit of the
+      -- first leg; a later leg, after a collision, may start inside it still and go further
+      -- in along its MTV then: met)
+      if (sureHits[b] or pre.mtv[b] and k > 0) and not PASS[self:moveResponse(plan, self:E(b))] then
+        allPass = false
+      end
     end
     if allPass then
       self:check(ax == plan.gx and ay == plan.gy, '%s: everything on the way is passed through (%d bodies), yet it'
@@ -2353,7 +2507,7 @@ function P:checkMove(what, plan, pre, f, ax, ay, cols, k)
     end
   end
   -- snap: a move that does not go up ends on walkable ground within snap below it, when
-  -- there is some (checked with a slope: the README defines walkable by it)
+  -- there is some (checked with a slope: docs/moving.md defines walkable by it)
   if snaps and not rising and plan.opts.slope and not f.any then
     local snap, c = plan.opts.snap, cos(plan.opts.slope)
     -- (the skin: of the body's radius, or for a body of none the length of its move)
@@ -2445,7 +2599,7 @@ ACTIONS.transform = function(self, s, ctx)
 end
 
 -- Move the body that the move or cast this filter serves is moving (a transform of it as a
--- whole): the README says that is an error, raised from that call (see subjectMoved).
+-- whole): docs/space.md says that is an error, raised from that call (see subjectMoved).
 ACTIONS.moveSubject = function(self, s)
   local b = s.subject
   if not b then return end
@@ -2736,6 +2890,9 @@ end
 
 local CHANGE_WEIGHTS = { transform = 4, member = 1.5, add = 2, remove = 1.5, set = 1.5, touch = 1, setFilter = 0.5,
   on = 0.7, off = 0.5, addResponse = 0.2 }
+local LEAN_CHANGE_WEIGHTS = {} -- (leaning toward moves: addResponse more often)
+for k, v in pairs(CHANGE_WEIGHTS) do LEAN_CHANGE_WEIGHTS[k] = v end
+LEAN_CHANGE_WEIGHTS.addResponse = 0.8
 local QUERY_WEIGHTS = { collisions = 3, check = 2, queryPoint = 1.5, queryRect = 1.5, queryShape = 1.5, rayCast = 2,
   rayCastAll = 1.5, cast = 2, move = 4, bodies = 0.8 }
 
@@ -2781,7 +2938,7 @@ function P:step()
     self.stepNo = self.stepNo + 1
     self:top(function() Q[q](self, target, X, sub) end)
   elseif r < 0.72 then
-    local name = weighted(rng, WM.CHANGES, CHANGE_WEIGHTS, F.changes)
+    local name = weighted(rng, WM.CHANGES, self.lean.moves and LEAN_CHANGE_WEIGHTS or CHANGE_WEIGHTS, F.changes)
     local ok, _, _, run = self:change(name)
     if ok then self:top(run) end
   else
@@ -2794,12 +2951,20 @@ end
 --- Run the program: populate, then `steps` steps, then the end checks.
 function P:run(steps)
   local rng, w, F = self.rng, self.w, self.F
-  self.events = F.events and rng:next() < 0.85
+  self.events = F.events and (self.lean.events or rng:next() < 0.85)
   if self.events then
     for _, E in ipairs({ 'begin', 'stay', 'end' }) do
       local reg = { event = E, fn = self:recorderFn(E), tag = 'recorder:' .. E }
       self.cbs[E][1] = reg
       self.space:on(E, reg.fn)
+    end
+    if self.lean.events then
+      -- (a callback that raises, then one or two more on the same event)
+      local E = ({ 'begin', 'stay', 'stay', 'end' })[rng:int(1, 4)]
+      local s = self:newScript('event')
+      self:leanAction(s, { 'raise' })
+      self:on(E, s)
+      for _ = 1, rng:int(1, 2) do self:on(E, self:newScript('event')) end
     end
     for _ = 1, rng:int(0, 5) do
       local E = ({ 'begin', 'stay', 'end' })[rng:int(1, 3)]
@@ -2810,9 +2975,16 @@ function P:run(steps)
     self:addResponse('stopper', self:newScript('response'))
     self:addResponse('passer', self:newScript('response'))
   end
-  if rng:next() < 0.4 then self:setPairFilter(self:newScript('pair')) end
+  if self.lean.pair then -- (a pair filter from the start, which raises, removes or calls collisions())
+    local s = self:newScript('pair')
+    self:leanAction(s, LEAN_ACTIONS.pair)
+    self:setPairFilter(s)
+  elseif rng:next() < 0.4 then
+    self:setPairFilter(self:newScript('pair'))
+  end
   local n0 = 5 + floor(35 * rng:next() ^ 2)
   for _ = 1, n0 do self:addBody(w:newBody(), rng:next() < 0.6 and w:randomOpts() or nil) end
+  if self.lean.moves then self:addWalker() end
   if F.crowd and self.index % 10 == 0 then self:crowd() end
   self:count('programs')
   self:count('bodies at the start', n0)
@@ -2822,6 +2994,37 @@ function P:run(steps)
   end
   self:count('steps', self.stepNo)
   if F.gc then self:gcCheck() end
+end
+
+-- The moves lean: a floor below the bodies and a walker on it; a quarter of the moves are
+-- walks along it with snap and a slope (the snap check needs ground below the end of a move
+-- that does not go up). Both are bodies as any other: the program may move or remove them.
+function P:addWalker()
+  local w = self.w
+  local L, h, r = w:side(), w:snap(w.s), w.s * 0.4
+  local top = w:snap(w.cy + L)
+  local ground = w:register(S.hapes.Rectangle(w:snap(w.cx), top + h / 2, w:snap(2 * L), h), 'shape', true)
+  self:addBody(ground, nil)
+  local walker = w:register(S.hapes.Circle(w.cx, top - r * 1.05, r), 'shape')
+  self:addBody(walker, nil)
+  self.walk = setmetatable({ ground = ground, walker = walker }, { __mode = 'v' }) -- (the model keeps no body alive)
+end
+
+-- A walk of the walker (see addWalker): along the ground to a point above it, or nil when
+-- the walker is not in the space or is being moved.
+function P:walkPlan()
+  local walk, rng = self.walk, self.rng
+  local M, ground = walk and walk.walker, walk and walk.ground
+  if not (M and ground and self:E(M) and self:E(ground)) or self.moving[M] then return nil end
+  local _, y = M:getCentroid()
+  local x0, _, x1 = ground:getBounds()
+  local plan = { M = M, fc = {}, pfc = {}, gx = rng:range(x0, x1), gy = y,
+    opts = { snap = self.w.s * logRange(rng, 0.1, 1), slope = rng:range(0.5, 1.3) } }
+  if rng:next() < 0.3 then
+    plan.script = self:newScript('move', false, M)
+    plan.filter = self:moveFilterFn(plan.script, plan)
+  end
+  return plan
 end
 
 -- A row of coins and a bullet through them with a filter that crosses everything; then the
@@ -2844,8 +3047,7 @@ function P:crowd()
   local plan = { M = bullet, fc = {}, pfc = {}, gx = x0 + 2 * s * (n + 2), gy = y, script = sc }
   plan.filter = self:moveFilterFn(sc, plan)
   self.stepNo = self.stepNo + 1
-  self:count('op move')
-  self:count('crowd moves')
+  self:count('crowd moves') -- (not an 'op move': those are the random ones)
   self:top(function() Q.move(self, nil, nil, nil, plan) end)
   self:top(function()
     for _, c in ipairs(coins) do self:removeBody(c) end
@@ -2958,12 +3160,13 @@ function P:gcCheck()
   S.triking(a, b)
   S.weep(a, 1, 0, b)
   for _ = 1, 2 do collectgarbage('collect') end
-  -- What the space's own tables hold (README, "Reused tables"; "Moving bodies": a move's
-  -- list and its records are the space's, reused by the next move): the last collision list
-  -- of each move level, space._cols[d][i], is a result still valid, and may name bodies
-  -- removed since; nothing else of the space may keep a removed body or a dropped function
-  -- alive. (The library's module scratch, reached only through upvalues of its functions,
-  -- holds at most the last shapes it processed: it is not walked.)
+  -- What the space's own tables hold (README, "Conventions", Reused tables; docs/moving.md,
+  -- "Moving bodies in a space": a move's list and its records are the space's, reused by the
+  -- next move): the last collision list of each move level, space._cols[d][i], is a result
+  -- still valid, and may name bodies removed since; nothing else of the space may keep a
+  -- removed body or a dropped function alive. (The library's module scratch, reached only
+  -- through upvalues of its functions, holds at most the last shapes it processed: it is not
+  -- walked.)
   local skip = {}
   for _, list in pairs(rawget(sp, '_cols') or {}) do skip[list] = true end
   if not self.F.errorScratchLetsGo then -- (see FEATURES.errorScratchLetsGo)
@@ -2973,6 +3176,14 @@ function P:gcCheck()
     end
     for _, list in pairs(rawget(sp, '_cols') or {}) do
       if type(list.hit) == 'table' then skip[list.hit] = { body = true } end
+    end
+  end
+  if not self.F.contactShapesLetGo then -- (see FEATURES.contactShapesLetGo)
+    for _, rec in pairs(rawget(sp, '_active') or {}) do
+      if type(rec) == 'table' then
+        skip[rec] = { _sa = true, _sb = true }
+        if type(rec._c) == 'table' then skip[rec._c] = { _spares = true } end
+      end
     end
   end
   local left, where = {}, {}

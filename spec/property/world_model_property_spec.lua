@@ -14,15 +14,19 @@
 -- move, set, call on/off (of themselves, of later callbacks) and setFilter, make bad calls,
 -- and raise errors, which the program's pcall catches; then the space must still agree with
 -- the model, and the events stay balanced. At the end of each program, nothing the program
--- let go may be kept alive by the space.
+-- let go may be kept alive by the space. Each program leans toward some of the chains the
+-- random mix reaches in few programs (by the bits of its index: world_model.lua, LEAN_WEIGHTS):
+-- an error in a callback with others after it on the same event, the pair filter raising,
+-- removing or calling collisions(), walks with snap along a floor, a filter moving the body
+-- being moved, calls out of the range of motion.
 --
 -- Replay: a run goes through every program and lists each distinct failure once (how many
 -- programs, the first one) and the first in full: the seed and the program (STRIKE_SEED=<seed>
 -- STRIKE_PROGRAM=<n>, any VM) and the last calls, indented where they ran inside another
 -- (STRIKE_HISTORY=<n> shows more, STRIKE_TRACE=1 adds every call of a filter). Each class of
 -- generated operation can be switched off in FEATURES below or with STRIKE_FEATURES (to look
--- past a failure for the next one); everything is on in the committed spec. A switch
--- turned off for a bug of the library names it, with its reproduction, and goes back on
+-- past a failure for the next one); everything is on in the committed spec but what a bug of
+-- the library turned off: such a switch names the bug, with its reproduction, and goes back on
 -- when the library is fixed.
 local WM = require('spec.property.world_model')
 local PRNG = require('spec.helpers.prng')
@@ -49,8 +53,23 @@ local FEATURES = {
   -- move level's hit (found: a move that an error stopped after a hit kept the body hit alive;
   -- spec/space_call_order_spec.lua has the repro)
   errorScratchLetsGo = true,
+  -- the end-of-program check covers the shapes a colliding pair's record keeps of its earlier
+  -- contacts (found: a member removed from a collider stays alive in the record of a pair of
+  -- that collider that goes on touching: strike/space/Space.lua's contacts() overwrites only
+  -- as many of rec._sa, rec._sb as there are contacts now, and S.ite's spare points past the
+  -- count, rec._c._spares, keep their shapes; seed 79's program 333 on LuaJIT. Repro, any
+  -- VM: a space with a 'stay' callback, a Collider X of circles m2 and m1 both on a box Y;
+  -- collisions() twice; X:remove(2); collisions() twice; drop m1 and collect: it is alive)
+  contactShapesLetGo = false,
   strictRemoved = true, -- a body removed during a call never appears in its results (else: may)
   memberProbes = true, -- cast() of a member of a body in the space (check and queryShape of one always)
+  -- a filter of a cast removes a member (Collider:remove) of the body being cast (found: the cast
+  -- fails inside strike/motion/sweep.lua, "attempt to index local 'A' (a nil value)", neither
+  -- the error of docs/space.md nor an answer; space:move too. Repro, any VM: a Collider C of two
+  -- circles and two boxes in its way in a space, then space:cast(C, 20, 0, function()
+  -- C:remove(1) return true end). Rare in the programs: found once, by seed 404's run while
+  -- the leans were being tuned)
+  memberRemovedFromCast = false,
   -- check: a move never meets the same body at t = 0 eight legs in a row without moving
   -- (found: 19 legs from the same place, at 738 units from the origin; the repro is in
   -- spec/space_call_order_spec.lua)
@@ -60,7 +79,7 @@ local FEATURES = {
   -- MoveFilter|Callback|Response> = false switches it off there only)
   query = true, collisions = true, remove = true, add = true, transform = true, spaceMove = true, member = true,
   set = true, setFilter = true, on = true, off = true, raise = true, badCall = true, caught = true,
-  moveSubject = true, -- (a move's or cast's filter moves the body being moved: the README's error)
+  moveSubject = true, -- (a move's or cast's filter moves the body being moved: an error, docs/space.md)
   -- changes = { transform = false, ... } and queries = { move = false, ... } switch steps off
 }
 
@@ -124,7 +143,8 @@ describe('the world against its model', function()
     local jit = rawget(_G, 'jit')
     local kinds, order, failed, ran = {}, {}, 0, 0
     local ok, err = pcall(function()
-      for i = 1, PROGRAMS do
+      -- (STRIKE_PROGRAM past this VM's share runs too: a program is the same on every VM)
+      for i = 1, math.max(PROGRAMS, ONLY or 0) do
         if jit and i == JIT_PROGRAMS + 1 then jit.off() end
         if not ONLY or ONLY == i then
           ran = ran + 1
@@ -145,7 +165,7 @@ describe('the world against its model', function()
       end
     end)
     if jit then jit.on() end
-    stats.failed = failed
+    stats.failed, stats.ran = failed, ran
     if not ok then error(err, 0) end
     if failed > 0 then
       -- (wrong answers and crashes first, then what is kept alive)
@@ -217,14 +237,27 @@ describe('the world against its model', function()
     want(F.events and on('raise', 'Callback'), 'collisions stopped in a callback', 'resumed events',
       'resumed deliveries')
     want(F.events and on('raise', 'PairFilter'), 'collisions stopped in the pair filter')
-    -- a filter that moves the body being moved: the README's error; moves and casts out of
+    -- a filter that moves the body being moved: docs/space.md's error; moves and casts out of
     -- the range of motion: the error naming the limit
     want(on('moveSubject', 'MoveFilter'), 'action moveSubject in move', 'subject-moved errors')
     want(on('moveSubject', 'QueryFilter'), 'action moveSubject in query')
     want(true, 'out-of-range calls')
-    local least = math.ceil(20 * budget.SHARE) -- (of each, in the programs run on this VM)
+    -- Each in at least one program in 18 of those run (20 of LuaJIT's 360, 5 of the 90 run on
+    -- Lua 5.1-5.4), counted in programs, not in calls: a program draws its own world and
+    -- calls, so the count is a sum over independent programs, and a few programs that do a
+    -- thing many times cannot stand for the rest. The rarest (snapped moves checked, the pair
+    -- filter stopping collisions()) are in 22% and 24% of the programs, the others in more (the
+    -- leans of world_model.lua see to it; measured over 48 seeds on LuaJIT, 17,280 programs:
+    -- at least 65 of 360 in every seed): the 70 checks together then fail for fewer than one
+    -- seed in 100,000 on 90 programs, and never in practice on 360 (2e-18). The 71st, moves
+    -- through 64 or more, is every crowd (every 10th program).
+    local least = math.ceil(stats.ran / 18)
+    local present = stats.present or {}
+    local short = {}
     for _, k in ipairs(need) do
-      assert((stats[k] or 0) >= least, ('seed %d: only %d %s'):format(SEED, stats[k] or 0, k))
+      if (present[k] or 0) < least then short[#short + 1] = ('%s in %d'):format(k, present[k] or 0) end
     end
+    assert(#short == 0, ('seed %d: in fewer than %d of the %d programs: %s'):format(SEED, least, stats.ran,
+      table.concat(short, ', ')))
   end)
 end)
