@@ -299,8 +299,8 @@ end
 -- `transformed`: the bodies moved as a whole (a transform of the body itself, or a
 -- space:move of it), which docs/space.md forbids for the body a move or cast is moving.
 function P:push(kind)
-  local f = { kind = kind, removed = {}, added = {}, moved = {}, opts = {}, transformed = {}, pf = false, any = false,
-    gone = {} } -- (gone: a body removed -> its entry then)
+  local f = { kind = kind, removed = {}, added = {}, moved = {}, opts = {}, transformed = {}, members = {}, pf = false,
+    any = false, gone = {} } -- (gone: a body removed -> its entry then; members: a member added or removed)
   self.frames[#self.frames + 1] = f
   return f
 end
@@ -1532,16 +1532,19 @@ end
 
 -- After a cast or move of `body` (its frame f; pcall's results r): docs/space.md ("Your code
 -- inside a call"): moving the body that move or cast is moving, from a filter, is an error,
--- raised from the call. A transform of the body as a whole (see push) must raise it; a change
--- of one of its members, or of the body it is a member of, may (the docs leave it open).
+-- raised from the call. A transform of the body as a whole (see push), or a member added to it
+-- or removed from it, must raise it; a change of one of its members, or of the body it is a
+-- member of, may (the docs leave it open).
 -- Returns true when the call raised it; raises the call's other errors.
 function P:subjectMoved(what, fname, f, r, body)
   local root = self.rootOf[body]
+  -- (a member of the body itself added or removed: the same error, docs/space.md)
   local must = (f.transformed[body] or root and f.transformed[root]) and World.firstLeaf(body) ~= nil
+    or f.members[body]
   local may = must or f.moved[body] or f.transformed[body] or root and (f.moved[root] or f.transformed[root])
   if r[1] then
-    self:check(not must, '%s: a filter moved the body being moved as a whole, and the call raised no error'
-      .. ' (docs/space.md: an error)', what)
+    self:check(not must, '%s: a filter moved the body being moved as a whole, or added or removed a member of it,'
+      .. ' and the call raised no error (docs/space.md: an error)', what)
     return false
   end
   local e = r[2]
@@ -2596,6 +2599,7 @@ ACTIONS.transform = function(self, s, ctx)
   ch.apply(b)
   self:effect('moved', b)
   if ch.what == 'transform' then self:effect('transformed', b) end
+  if ch.what == 'memberAdd' or ch.what == 'memberRemove' then self:effect('members', b) end
 end
 
 -- Move the body that the move or cast this filter serves is moving (a transform of it as a
@@ -2619,6 +2623,7 @@ ACTIONS.member = function(self, s, ctx)
   self:log('%s: %s %s', s.tag, ch.desc, b)
   ch.apply(b)
   self:effect('moved', b)
+  if ch.what == 'memberAdd' or ch.what == 'memberRemove' then self:effect('members', b) end
 end
 
 ACTIONS.set = function(self, s, ctx)

@@ -54,22 +54,18 @@ local FEATURES = {
   -- spec/space_call_order_spec.lua has the repro)
   errorScratchLetsGo = true,
   -- the end-of-program check covers the shapes a colliding pair's record keeps of its earlier
-  -- contacts (found: a member removed from a collider stays alive in the record of a pair of
-  -- that collider that goes on touching: strike/space/Space.lua's contacts() overwrites only
-  -- as many of rec._sa, rec._sb as there are contacts now, and S.ite's spare points past the
-  -- count, rec._c._spares, keep their shapes; seed 79's program 333 on LuaJIT. Repro, any
-  -- VM: a space with a 'stay' callback, a Collider X of circles m2 and m1 both on a box Y;
-  -- collisions() twice; X:remove(2); collisions() twice; drop m1 and collect: it is alive)
-  contactShapesLetGo = false,
+  -- contacts (found: a member removed from a collider stayed alive in the record of a pair of
+  -- that collider that went on touching, in rec._sa, rec._sb and S.ite's spare points,
+  -- rec._c._spares; seed 79's program 333 on LuaJIT; spec/space_call_order_spec.lua has the
+  -- repro)
+  contactShapesLetGo = true,
   strictRemoved = true, -- a body removed during a call never appears in its results (else: may)
   memberProbes = true, -- cast() of a member of a body in the space (check and queryShape of one always)
-  -- a filter of a cast removes a member (Collider:remove) of the body being cast (found: the cast
-  -- fails inside strike/motion/sweep.lua, "attempt to index local 'A' (a nil value)", neither
-  -- the error of docs/space.md nor an answer; space:move too. Repro, any VM: a Collider C of two
-  -- circles and two boxes in its way in a space, then space:cast(C, 20, 0, function()
-  -- C:remove(1) return true end). Rare in the programs: found once, by seed 404's run while
-  -- the leans were being tuned)
-  memberRemovedFromCast = false,
+  -- a filter of a cast removes a member (Collider:remove) of the body being cast: the error of
+  -- a filter that moved it (found: the cast failed inside strike/motion/sweep.lua, "attempt to
+  -- index local 'A' (a nil value)"; space:move too; seed 404's run; the repro is in
+  -- spec/space_call_order_spec.lua)
+  memberRemovedFromCast = true,
   -- check: a move never meets the same body at t = 0 eight legs in a row without moving
   -- (found: 19 legs from the same place, at 738 units from the origin; the repro is in
   -- spec/space_call_order_spec.lua)
