@@ -21,7 +21,9 @@
 ---    clipped against them as a ray against a polygon (M. Cyrus and J. Beck, "Generalized
 ---    two- and three-dimensional clipping", Computers & Graphics 3(1), 1978, as
 ---    collide/ray.lua does): the interval [lo, hi] of t inside M. A hit needs lo < hi (an
----    interior to enter), hi > 0 and lo <= 1; t = max(lo, 0). The face that gave lo is the
+---    interior to enter; a segment core's two faces, whose slab has no width, may give
+---    lo = hi within rounding: a crossing of its line, see sharpToi), hi > 0 and lo <= 1;
+---    t = max(lo, 0). The face that gave lo is the
 ---    hit's normal, from B toward A. An h within the touching tolerance of 0 (round-off of a
 ---    touching start: see Tolerances) counts as 0, so that a pair touching at the start and
 ---    moving apart is no hit, and one moving in is a hit at t = 0. A move parallel to a face
@@ -165,6 +167,10 @@ end
 -- State of the axis scan: `mode` 1 clips the ray (toi), 2 finds the smallest h (overlap).
 local mode, mdx, mdy, tieH, tieT, par = 1, 0, 0, 0, 0, 0
 local lo, hi, dead = -huge, huge, false
+-- The exit time of a segment core's faces (segExit: the axes being stepped are them), kept
+-- apart from hi: a segment has no width, so a core crossing its line leaves it through one
+-- face when it enters through the other, the same time up to rounding (see sharpToi).
+local hiSeg, segExit = huge, false
 local bux, buy, bclass, btag, bdn, bcorner = 0, 0, 0, 0, 0, false
 local minH = huge
 
@@ -194,7 +200,11 @@ local function step(ux, uy, h, class, tag)
   elseif dn > par then
     if h <= tieH and h >= -tieH then h = 0 end
     local tx = h / dn
-    if tx < hi then hi = tx end
+    if segExit then
+      if tx < hiSeg then hiSeg = tx end
+    elseif tx < hi then
+      hi = tx
+    end
   elseif h <= 0 then
     -- Along the axis (within the rounding of a direction: par): inside its slab for the whole
     -- move or never, as S.triking finds it, to the last bit. (A tolerance here would let a body
@@ -241,10 +251,12 @@ local function scan(A, B)
       step(B[k + opp + NX], B[k + opp + NY], B[k + opp + D] + hi_, 1, k + opp)
     end
   elseif nb >= 2 then
+    segExit = nb == 2
     for k = b0, b1, STRIDE do
       local ux, uy = B[k + NX], B[k + NY]
       step(ux, uy, B[k + D] - minProj(A, a0, a1, ux, uy), 1, k)
     end
+    segExit = false
   end
   half = na >= 4 and A[HALF] or 0
   if half > 0 then
@@ -256,10 +268,12 @@ local function scan(A, B)
       step(-A[k + opp + NX], -A[k + opp + NY], A[k + opp + D] + hi_, 2, k + opp)
     end
   elseif na >= 2 then
+    segExit = na == 2
     for k = a0, a1, STRIDE do
       local mx, my = A[k + NX], A[k + NY]
       step(-mx, -my, A[k + D] - minProj(B, b0, b1, mx, my), 2, k)
     end
+    segExit = false
   end
   local pointA = na == 1 or (na == 2 and not segmentAxes(A, a0, a1, B, b0, b1, false))
   local pointB = nb == 1 or (nb == 2 and not segmentAxes(B, b0, b1, A, a0, a1, true))
@@ -432,12 +446,20 @@ local function sharpToi(A, B, dx, dy, tol)
   mode, mdx, mdy, tieH = 1, dx, dy, tol
   local dl = sqrt(dx * dx + dy * dy)
   tieT, par = dl > 0 and tol / dl or 0, PARALLEL * dl
-  lo, hi, dead, bclass, bcorner = -huge, huge, false, 0, false
+  lo, hi, dead, bclass, bcorner, hiSeg = -huge, huge, false, 0, false, huge
   scan(A, B)
+  local hiAll = hi < hiSeg and hi or hiSeg
   -- (overlapping at the start, beyond round-off: the caller's S.triking decides)
-  if not dead and lo < -tieT and hi > tieT and B._kind ~= 'chain' then kernels.overlap = true end
+  if not dead and lo < -tieT and hiAll > tieT and B._kind ~= 'chain' then kernels.overlap = true end
+  -- The cores meet for a while (lo < hi), or one crosses a segment's line inside its ends
+  -- (or at one): the segment's faces' entry and exit are then one time, to within rounding
+  -- either way (a point moving into an edge passed through it, or met it by the last bit of
+  -- the edge's coordinates: lo < hi alone), and every other axis leaves the crossing inside
+  -- (a core that only passes a corner keeps lo = hi there: touching, no hit). A crossing at
+  -- the start is no hit (hi > 0 below): touching, and apart after.
+  local meet = lo < hiAll or (lo < hi and lo <= hiSeg + tieT)
   -- luacheck: ignore 581 (NaN reads as no hit)
-  if dead or bclass == 0 or not (lo < hi) or not (hi > 0) or not (lo <= 1) then return false end
+  if dead or bclass == 0 or not meet or not (hiAll > 0) or not (lo <= 1) then return false end
   local ux, uy = bux, buy
   if B._kind == 'chain' then -- a chain segment: its own normal, or a convex corner's cone
     if lo < -tieT then return false end -- (partly through it already: it lets A pass)
