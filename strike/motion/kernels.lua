@@ -21,9 +21,8 @@
 ---    clipped against them as a ray against a polygon (M. Cyrus and J. Beck, "Generalized
 ---    two- and three-dimensional clipping", Computers & Graphics 3(1), 1978, as
 ---    collide/ray.lua does): the interval [lo, hi] of t inside M. A hit needs lo < hi (an
----    interior to enter; a segment core's two faces, whose slab has no width, may give
----    lo = hi within rounding: a crossing of its line, see sharpToi), hi > 0 and lo <= 1;
----    t = max(lo, 0). The face that gave lo is the
+---    interior to enter; where a segment core's faces bound it, by more than the ties'
+---    tolerance: see sharpToi), hi > 0 and lo <= 1; t = max(lo, 0). The face that gave lo is the
 ---    hit's normal, from B toward A. An h within the touching tolerance of 0 (round-off of a
 ---    touching start: see Tolerances) counts as 0, so that a pair touching at the start and
 ---    moving apart is no hit, and one moving in is a hit at t = 0. A move parallel to a face
@@ -451,13 +450,14 @@ local function sharpToi(A, B, dx, dy, tol)
   local hiAll = hi < hiSeg and hi or hiSeg
   -- (overlapping at the start, beyond round-off: the caller's S.triking decides)
   if not dead and lo < -tieT and hiAll > tieT and B._kind ~= 'chain' then kernels.overlap = true end
-  -- The cores meet for a while (lo < hi), or one crosses a segment's line inside its ends
-  -- (or at one): the segment's faces' entry and exit are then one time, to within rounding
-  -- either way (a point moving into an edge passed through it, or met it by the last bit of
-  -- the edge's coordinates: lo < hi alone), and every other axis leaves the crossing inside
-  -- (a core that only passes a corner keeps lo = hi there: touching, no hit). A crossing at
-  -- the start is no hit (hi > 0 below): touching, and apart after.
-  local meet = lo < hiAll or (lo < hi and lo <= hiSeg + tieT)
+  -- The cores meet for a while: lo < hi, and by more than the ties' tolerance before a
+  -- segment's faces let go (a segment has no width: a point, or a segment parallel to it,
+  -- crossing its line enters through one face at the time it leaves through the other, the
+  -- same time but for rounding; M has no interior there, and no area between the two to
+  -- overlap, so that is no hit, as S.triking never finds them colliding. Strictly lo < hi
+  -- let rounding decide: a point met a chain segment far from the origin or passed through
+  -- it by the last bit of its ends.)
+  local meet = lo < hi and lo < hiSeg - tieT
   -- luacheck: ignore 581 (NaN reads as no hit)
   if dead or bclass == 0 or not meet or not (hiAll > 0) or not (lo <= 1) then return false end
   local ux, uy = bux, buy
