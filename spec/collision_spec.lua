@@ -288,6 +288,33 @@ describe('S.triking keeps nothing alive', function()
   end)
 end)
 
+describe('S.ite keeps nothing alive', function()
+  -- (it tests the pair again into scratch MTVs of its own when a shape moved since the MTV)
+  local T = S.trikers
+  it('no shape or body of a pair it tested again, one member each or several', function()
+    for _, several in ipairs({ false, true }) do
+      local weak = setmetatable({}, { __mode = 'v' })
+      local a, b
+      if several then
+        a = T.Collider(H.Circle(0, 0, 4), H.Circle(0, 20, 4))
+        b = T.Collider(H.Circle(5, 0, 4), H.Circle(5, 20, 4))
+      else
+        a, b = H.Circle(0, 0, 4), H.Circle(5, 0, 4)
+      end
+      weak[1], weak[2] = a, b
+      local m = S.triking(a, b)
+      assert.is_table(m)
+      b:translate(0.5, 0) -- (moved since: S.ite tests the pair again)
+      assert.is_table(S.ite(m))
+      m, a, b = nil, nil, nil -- luacheck: ignore 311
+      collectgarbage('collect')
+      collectgarbage('collect')
+      assert.is_nil(weak[1], several and 'several members' or 'one each')
+      assert.is_nil(weak[2], several and 'several members' or 'one each')
+    end
+  end)
+end)
+
 describe('S.ettle and S.hove', function()
   it('S.ettle moves both colliders half way, apart', function()
     local a, b = S.trikers.Rectangle(0, 0, 10), S.trikers.Rectangle(8, 0, 10)

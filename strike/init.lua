@@ -93,6 +93,12 @@ S.triking = compound.collide
 
 local scratch = MTV() -- S.ite's re-test of shapes that moved
 local scratchCompound = MTV() -- and of bodies with several members
+
+-- A scratch MTV lets go of the shapes and bodies it names once tested into (S.ite reads its
+-- numbers only): a body the game drops is not kept alive by strike.
+local function letGo(m)
+  m.colliderShape, m.collidedShape, m.collider, m.collided = false, false, false, false
+end
 local one1, one2 = {}, {} -- (one-slot leaf lists for bare shapes)
 
 -- A body's leaves: a collider's leaf list, or a bare shape in `one`.
@@ -125,6 +131,7 @@ local function compoundContacts(mtv, a, b, c1, l1, n1, c2, l2, n2, out)
   local m = mtv
   if a._pose ~= mtv._poseA or b._pose ~= mtv._poseB then
     m = compound.collide(c1, c2, scratchCompound)
+    letGo(scratchCompound)
     if not m then return nil end
   end
   if not (m.depth > 0) then return nil end -- luacheck: ignore 581 (NaN reads as no collision)
@@ -203,6 +210,7 @@ function S.ite(mtv, out)
   local m = mtv
   if a._pose ~= mtv._poseA or b._pose ~= mtv._poseB then
     m = ops.collide(a, b, scratch)
+    letGo(scratch)
   else
     checkFace(m, a, b)
   end
