@@ -58,21 +58,11 @@ local vmFile = jit and 'luajit' or _VERSION:gsub('Lua ', 'lua')
 
 -- Libraries: strike first, then the peers found under STRIKE_PEERS.
 local libs = { (require('bench.adapters.strike')) } -- one value: Lua 5.4's require returns two
-local peerDir = os.getenv('STRIKE_PEERS')
 local skipped = {}
-if peerDir and peerDir ~= '' then
-  for _, p in ipairs({ { 'HC', 'bench.adapters.hc' }, { 'Strike', 'bench.adapters.strike_original' },
-    { 'slick', 'bench.adapters.slick' }, { 'bump.lua', 'bench.adapters.bump' } }) do
-    local f = io.open(peerDir .. '/' .. p[1] .. '/README.md', 'r')
-    if f then
-      f:close()
-      local okReq, adapter = pcall(require, p[2])
-      local ok, err = false, adapter
-      if okReq then ok, err = adapter.load(peerDir, p[1]) end
-      if ok then libs[#libs + 1] = adapter else skipped[#skipped + 1] = p[1] .. ' (' .. tostring(err) .. ')' end
-    end
-  end
-end
+H.peers({ { 'HC', 'HC', 'bench.adapters.hc' }, { 'Strike', 'Strike', 'bench.adapters.strike_original' },
+  { 'slick', 'slick', 'bench.adapters.slick' }, { 'bump.lua', 'bump.lua', 'bench.adapters.bump' } },
+  function() return true end, libs, skipped,
+  'HC, Strike, slick, bump.lua (set STRIKE_PEERS to a folder with their checkouts)')
 
 local timeRow, verify, MIN_TIMED = H.timeRow, H.verify, H.MIN_TIMED
 
@@ -337,7 +327,6 @@ if concave[CONCAVE_KINDS[1][1]] then
     slowest * 1000, which, slowest < 1 and 'met' or 'NOT MET'))
 end
 if #skipped > 0 then print('peers skipped: ' .. table.concat(skipped, '; ')) end
-if not peerDir then print('(no peers: set STRIKE_PEERS to a folder with HC, Strike, slick or bump.lua checkouts)') end
 print(('(%d s in all)'):format(os.time() - t0))
 
 if opts.save then

@@ -2,13 +2,7 @@
 -- a change to a public function's annotations, or a new public function, fails here until
 -- the reference is generated again. The tool's own rules: its header.
 local apidoc = require('tools.apidoc')
-
-local function read(path)
-  local f = assert(io.open(path, 'rb'))
-  local s = f:read('*a')
-  f:close()
-  return s
-end
+local read = require('spec.helpers.markdown').read
 
 -- strike's sources, as the Makefile lists them (the spec runs `find`; strike never does).
 local function sources()
