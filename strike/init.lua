@@ -93,12 +93,9 @@ S.triking = compound.collide
 
 local scratch = MTV() -- S.ite's re-test of shapes that moved
 local scratchCompound = MTV() -- and of bodies with several members
-
--- A scratch MTV lets go of the shapes and bodies it names once tested into (S.ite reads its
--- numbers only): a body the game drops is not kept alive by strike.
-local function letGo(m)
-  m.colliderShape, m.collidedShape, m.collider, m.collided = false, false, false, false
-end
+-- (each lets go of the shapes and bodies it names once tested into: S.ite reads its numbers
+-- only, and a body the game drops is not kept alive by strike)
+local letGo = MTV._letGo
 local one1, one2 = {}, {} -- (one-slot leaf lists for bare shapes)
 
 -- A body's leaves: a collider's leaf list, or a bare shape in `one`.

@@ -144,6 +144,12 @@ local function copy(self, other)
 end
 MTV._set = copy
 
+-- Let go of the shapes and bodies an MTV names (its numbers stay): strike's own scratch and
+-- pooled MTVs, so that they keep no body of the game's alive.
+function MTV._letGo(m)
+  m.colliderShape, m.collidedShape, m.collider, m.collided = false, false, false, false
+end
+
 --- Copy every field of `other` into this MTV.
 ---@param other strike.MTV
 ---@return self

@@ -39,6 +39,7 @@ local compound = {}
 -- Scratch state: two MTVs swapped as the best one changes, and one-slot leaf lists for
 -- bare shapes.
 local tmpA, tmpB = MTV(), MTV()
+local letGo = MTV._letGo
 local one1, one2 = {}, {}
 
 -- Fill the fields of `out` that name the bodies and the poses it was computed for (S.AT
@@ -89,7 +90,7 @@ function compound.collide(body1, body2, out)
     if not out then -- (tested into tmpA: a copy goes out, and tmpA lets go of the shapes)
       local hit = m.depth > 0
       if hit then out = MTV._set(MTV(), m) end
-      m.colliderShape, m.collidedShape = false, false
+      letGo(m)
       if not hit then return false end
     elseif not (m.depth > 0) then -- luacheck: ignore 581 (NaN reads as no collision)
       return false
@@ -172,8 +173,8 @@ function compound.collide(body1, body2, out)
     stamp(out, r1, r2)
   end
   -- (nor members by the scratch MTVs: a member removed from its body stays dead)
-  if tmpA ~= out then tmpA.colliderShape, tmpA.collidedShape = false, false end
-  if tmpB ~= out then tmpB.colliderShape, tmpB.collidedShape = false, false end
+  if tmpA ~= out then letGo(tmpA) end
+  if tmpB ~= out then letGo(tmpB) end
   return found > 0 and out
 end
 

@@ -605,8 +605,9 @@ local function takeRecord(self)
 end
 
 -- Let go of the shapes an MTV (and a list of contact points) names.
+local letGo = MTV._letGo
 local function forget(m, c)
-  m.colliderShape, m.collidedShape, m.collider, m.collided = false, false, false, false
+  letGo(m)
   local i, p = 1, c[1]
   while p do
     p.colliderShape, p.collidedShape = false, false
